@@ -1,0 +1,56 @@
+// Vec2: a point or vector in the world plane [m], x forward / y left (REP-103).
+// A world point is deliberately a different type from a grid Cell, so the two cannot be mixed up.
+#pragma once
+
+#include <cmath>
+#include <ostream>
+
+namespace voronav {
+
+struct Vec2 {
+  double x = 0.0;
+  double y = 0.0;
+
+  constexpr Vec2& operator+=(Vec2 o) {
+    x += o.x;
+    y += o.y;
+    return *this;
+  }
+  constexpr Vec2& operator-=(Vec2 o) {
+    x -= o.x;
+    y -= o.y;
+    return *this;
+  }
+  constexpr Vec2& operator*=(double s) {
+    x *= s;
+    y *= s;
+    return *this;
+  }
+  friend constexpr Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+  friend constexpr Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+  friend constexpr Vec2 operator-(Vec2 a) { return {-a.x, -a.y}; }
+  friend constexpr Vec2 operator*(Vec2 a, double s) { return {a.x * s, a.y * s}; }
+  friend constexpr Vec2 operator*(double s, Vec2 a) { return {a.x * s, a.y * s}; }
+  friend constexpr Vec2 operator/(Vec2 a, double s) { return {a.x / s, a.y / s}; }
+  friend constexpr bool operator==(Vec2 a, Vec2 b) = default;
+
+  [[nodiscard]] double norm() const { return std::hypot(x, y); }
+  [[nodiscard]] constexpr double squared_norm() const { return x * x + y * y; }
+  [[nodiscard]] bool is_finite() const { return std::isfinite(x) && std::isfinite(y); }
+};
+
+[[nodiscard]] constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+/// z component of the 3-D cross product: > 0 when b is counter-clockwise of a.
+[[nodiscard]] constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+[[nodiscard]] inline double distance(Vec2 a, Vec2 b) { return (a - b).norm(); }
+/// Rotates v counter-clockwise by yaw [rad].
+[[nodiscard]] inline Vec2 rotate(Vec2 v, double yaw) {
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+inline std::ostream& operator<<(std::ostream& os, Vec2 v) {
+  return os << '(' << v.x << ", " << v.y << ')';
+}
+
+}  // namespace voronav

@@ -1,0 +1,77 @@
+#include "voronav/field/distance_transform.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace voronav::field {
+namespace {
+
+BinaryGrid random_grid(std::mt19937& rng, int w, int h, double p) {
+  BinaryGrid g(w, h, 0);
+  std::bernoulli_distribution b(p);
+  for (std::size_t i = 0; i < g.size(); ++i) g[i] = b(rng) ? 1 : 0;
+  return g;
+}
+
+TEST(DistanceTransform, EqualsBruteForceOnRandomMaps) {
+  std::mt19937 rng(42);
+  for (int seed = 0; seed < 60; ++seed) {
+    const int w = 1 + static_cast<int>(rng() % 40), h = 1 + static_cast<int>(rng() % 40);
+    const double p = (seed % 6) * 0.05 + 0.005;
+    for (bool border : {false, true}) {
+      const BinaryGrid g = random_grid(rng, w, h, p);
+      const DistanceField df = distance_transform(g, {.border_is_blocked = border});
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          double best = HUGE_VAL;
+          for (int yy = 0; yy < h; ++yy)
+            for (int xx = 0; xx < w; ++xx)
+              if (g[Cell{xx, yy}]) best = std::min(best, double((x - xx) * (x - xx) + (y - yy) * (y - yy)));
+          if (border) {
+            best = std::min({best, double((x + 1) * (x + 1)), double((w - x) * (w - x)),
+                             double((y + 1) * (y + 1)), double((h - y) * (h - y))});
+          }
+          const float got = df.squared_distance[Cell{x, y}];
+          if (std::isinf(best)) {
+            EXPECT_TRUE(std::isinf(got));
+            EXPECT_EQ((df.nearest[Cell{x, y}]), kNoSite);
+            continue;
+          }
+          ASSERT_EQ(got, static_cast<float>(best)) << x << "," << y << " seed " << seed;
+          const std::int32_t n = df.nearest[Cell{x, y}];
+          if (n != kNoSite) {  // the named site is a blocked cell at exactly that distance
+            const Cell s = g.cell_at(static_cast<std::size_t>(n));
+            EXPECT_TRUE(g[s]);
+            EXPECT_EQ((s.x - x) * (s.x - x) + (s.y - y) * (s.y - y), static_cast<int>(best));
+          } else {
+            EXPECT_TRUE(border);
+          }
+        }
+    }
+  }
+}
+
+TEST(DistanceTransform, EmptyAndAllFree) {
+  const DistanceField e = distance_transform(BinaryGrid{});
+  EXPECT_TRUE(e.squared_distance.empty());
+  const DistanceField f = distance_transform(BinaryGrid(5, 4, 0));
+  EXPECT_TRUE(std::isinf(f.squared_distance[Cell{2, 2}]));
+}
+
+TEST(Inflate, BlocksCellsCloserThanRadius) {
+  BinaryGrid g(21, 21, 0, 0.1);
+  g[Cell{10, 10}] = 1;
+  const BinaryGrid inf = inflate(g, 0.3);  // 3 cells
+  for (int y = 0; y < 21; ++y)
+    for (int x = 0; x < 21; ++x) {
+      const int d2 = (x - 10) * (x - 10) + (y - 10) * (y - 10);
+      EXPECT_EQ((inf[Cell{x, y}] != 0), (d2 < 9)) << x << "," << y;
+    }
+  EXPECT_EQ(inflate(g, 0.0), g);
+  EXPECT_THROW((void)inflate(g, -1.0), Error);
+  EXPECT_THROW((void)inflate(g, std::nan("")), Error);
+}
+
+}  // namespace
+}  // namespace voronav::field
