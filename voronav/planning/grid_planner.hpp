@@ -42,8 +42,8 @@ struct PlannerOptions {
   /// Record the expanded cells in PlanResult::expanded_cells (for pictures).
   bool record_expanded = false;
   /// Optional cancel hook and deadline; either stops the search with kCancelled.
-  CancelFn cancel;
-  std::optional<std::chrono::steady_clock::time_point> deadline;
+  CancelFn cancel{};
+  std::optional<std::chrono::steady_clock::time_point> deadline{};
 };
 
 struct PlanResult {

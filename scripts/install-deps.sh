@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages voronav needs, only those that are missing (apt-get, as root;
+# uses sudo when not root). Usage: scripts/install-deps.sh [--tests] [--browser]
+set -euo pipefail
+pkgs=(cmake ninja-build g++ pkg-config python3 libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
+      libfmt-dev libspdlog-dev libboost-dev libcairo2-dev libpng-dev libtbb-dev
+      libgtest-dev libgmock-dev libbenchmark-dev)
+for arg in "$@"; do
+  case "$arg" in
+    --tests) ;;  # the test build needs nothing beyond the list above
+    *) echo "install-deps.sh: unknown option '$arg'" >&2; exit 2 ;;
+  esac
+done
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "voronav: installing missing Debian packages: ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps.sh: run as root to install: ${missing[*]}" >&2; exit 1; }
+  SUDO=sudo
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

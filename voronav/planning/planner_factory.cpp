@@ -1,0 +1,34 @@
+#include "voronav/planning/planner_factory.hpp"
+
+#include <string>
+
+#include "voronav/planning/astar.hpp"
+
+namespace voronav::planning {
+
+std::vector<std::string_view> planner_names() { return {"astar", "dijkstra"}; }
+
+PlannerKind parse_planner_kind(std::string_view name) {
+  if (name == "astar" || name == "a*") return PlannerKind::kAStar;
+  if (name == "dijkstra") return PlannerKind::kDijkstra;
+  throw Error("--planner", 0,
+              "unknown planner '" + std::string(name) + "'; expected one of: astar, dijkstra");
+}
+
+std::unique_ptr<GridPlanner> make_planner(PlannerKind kind, PlannerOptions options) {
+  switch (kind) {
+    case PlannerKind::kAStar:
+      return std::make_unique<AStarPlanner>(std::move(options));
+    case PlannerKind::kDijkstra:
+      return std::make_unique<DijkstraPlanner>(std::move(options));
+  }
+  throw Error("make_planner: unknown planner kind");
+}
+
+PlanResult plan_on_map(const OccupancyGrid& map, Cell start, Cell goal,
+                       const PlannerOptions& options, PlannerKind kind) {
+  const BinaryGrid grid = make_planning_grid(binarize(map), options.robot_radius);
+  return make_planner(kind, options)->plan(grid, start, goal);
+}
+
+}  // namespace voronav::planning

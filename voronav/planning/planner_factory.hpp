@@ -1,0 +1,27 @@
+// make_planner: builds a GridPlanner by name ("astar", "dijkstra", ...), so the CLI, scenario
+// files and benchmarks select planners the same way. plan_on_map() is the one-call convenience:
+// binarize, inflate by the robot radius, plan.
+#pragma once
+
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "voronav/planning/grid_planner.hpp"
+
+namespace voronav::planning {
+
+enum class PlannerKind { kAStar, kDijkstra };
+
+/// Parses "astar" / "dijkstra"; throws voronav::Error naming the accepted values otherwise.
+[[nodiscard]] PlannerKind parse_planner_kind(std::string_view name);
+[[nodiscard]] std::vector<std::string_view> planner_names();
+
+[[nodiscard]] std::unique_ptr<GridPlanner> make_planner(PlannerKind kind, PlannerOptions options = {});
+
+/// Binarizes `map` (unknown = blocked), inflates it by options.robot_radius and plans with A*.
+[[nodiscard]] PlanResult plan_on_map(const OccupancyGrid& map, Cell start, Cell goal,
+                                     const PlannerOptions& options = {},
+                                     PlannerKind kind = PlannerKind::kAStar);
+
+}  // namespace voronav::planning
