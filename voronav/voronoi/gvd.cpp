@@ -397,17 +397,29 @@ GeneralizedVoronoi build_gvd(const BinaryGrid& blocked, const GvdOptions& option
 }
 
 void thin_diagram(BinaryGrid& diagram, const GridMap<float>& clearance) {
+  GvdOptions o;
+  o.spur_min_length = 0.0;
+  o.spur_clearance_ratio = 0.0;
+  prune_diagram(diagram, clearance, o);
+}
+
+void prune_diagram(BinaryGrid& diagram, const GridMap<float>& clearance,
+                   const GvdOptions& options) {
+  check_options(options);
   if (diagram.width() != clearance.width() || diagram.height() != clearance.height())
-    throw Error("thin_diagram", 0, "the diagram and the clearance differ in size");
+    throw Error("prune_diagram", 0, "the diagram and the clearance differ in size");
   const int pw = diagram.width() + 2, ph = diagram.height() + 2;
   std::vector<std::uint8_t> skel(static_cast<std::size_t>(pw) * static_cast<std::size_t>(ph), 0);
   std::vector<std::size_t> order;
   std::vector<float> key(skel.size(), 0.0F);
+  auto at = [&](int x, int y) {
+    return static_cast<std::size_t>(y + 1) * static_cast<std::size_t>(pw) +
+           static_cast<std::size_t>(x + 1);
+  };
   for (int y = 0; y < diagram.height(); ++y)
     for (int x = 0; x < diagram.width(); ++x) {
-      const std::size_t i = static_cast<std::size_t>(y + 1) * static_cast<std::size_t>(pw) +
-                            static_cast<std::size_t>(x + 1);
       if (!diagram[Cell{x, y}]) continue;
+      const std::size_t i = at(x, y);
       skel[i] = 1;
       key[i] = clearance[Cell{x, y}];
       order.push_back(i);
@@ -415,11 +427,22 @@ void thin_diagram(BinaryGrid& diagram, const GridMap<float>& clearance) {
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return key[a] != key[b] ? key[a] < key[b] : a < b;
   });
-  internal::thin(skel, internal::PaddedRaster{pw, ph}, order);
+  const internal::PaddedRaster r{pw, ph};
+  internal::thin(skel, r, order);
+  if (options.spur_min_length > 0.0 || options.spur_clearance_ratio > 0.0) {
+    const double min_cells = options.spur_min_length / diagram.resolution();
+    for (int round = 0; round < options.prune_rounds; ++round) {
+      const std::size_t removed = internal::prune_spurs(skel, r, [&](std::size_t j) {
+        const double c = static_cast<double>(key[j]);
+        return std::max(min_cells, options.spur_clearance_ratio * (std::isfinite(c) ? c : 0.0));
+      });
+      if (removed == 0) break;
+      internal::thin(skel, r, order);
+    }
+  }
   for (int y = 0; y < diagram.height(); ++y)
     for (int x = 0; x < diagram.width(); ++x)
-      diagram[Cell{x, y}] = skel[static_cast<std::size_t>(y + 1) * static_cast<std::size_t>(pw) +
-                                 static_cast<std::size_t>(x + 1)];
+      diagram[Cell{x, y}] = skel[at(x, y)];
 }
 
 }  // namespace voronav::voronoi

@@ -152,4 +152,8 @@ class DynamicGvd {
 /// cellular-automaton diagram, which uses the same thinning.
 void thin_diagram(BinaryGrid& diagram, const GridMap<float>& clearance);
 
+/// Thins (as thin_diagram) and then prunes spurs of a diagram in place with the pruning options
+/// of `options` (spur_min_length, spur_clearance_ratio, prune_rounds); clearance in [cells].
+void prune_diagram(BinaryGrid& diagram, const GridMap<float>& clearance, const GvdOptions& options);
+
 }  // namespace voronav::voronoi

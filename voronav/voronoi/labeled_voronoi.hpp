@@ -51,7 +51,7 @@ struct CaVoronoiOptions {
   /// Same-label sources farther apart than max(site_separation [cells],
   /// site_separation_ratio * t) count as different obstacles; a huge value disables it.
   double site_separation = 2.5;
-  double site_separation_ratio = 1.0;
+  double site_separation_ratio = 0.0;
   /// Thin the diagram to one cell wide (the same thinning as the EDT diagram).
   bool thin = true;
 };
