@@ -33,12 +33,16 @@ GridMap<std::int32_t> free_components(const BinaryGrid& blocked) {
 }
 
 SegmentationScores segmentation_scores(const GridMap<std::int32_t>& regions,
-                                       const GridMap<std::int32_t>& rooms) {
+                                       const GridMap<std::int32_t>& rooms,
+                                       std::size_t min_room_cells) {
   if (regions.width() != rooms.width() || regions.height() != rooms.height())
     throw Error("segmentation_scores", 0,
                 "the segmentation is " + std::to_string(regions.width()) + "x" +
                     std::to_string(regions.height()) + " but the ground truth is " +
                     std::to_string(rooms.width()) + "x" + std::to_string(rooms.height()));
+  std::unordered_map<std::int32_t, std::size_t> room_size;
+  for (std::size_t i = 0; i < rooms.size(); ++i)
+    if (rooms[i] >= 0) room_size[rooms[i]]++;
   std::unordered_map<std::int32_t, std::size_t> room_area, region_area;
   std::unordered_map<std::uint64_t, std::size_t> overlap;
   auto key = [](std::int32_t a, std::int32_t b) {
@@ -47,7 +51,7 @@ SegmentationScores segmentation_scores(const GridMap<std::int32_t>& regions,
   };
   for (std::size_t i = 0; i < rooms.size(); ++i) {
     const std::int32_t room = rooms[i], region = regions[i];
-    if (room < 0 || region < 0) continue;
+    if (room < 0 || region < 0 || room_size[room] < min_room_cells) continue;
     room_area[room]++;
     region_area[region]++;
     overlap[key(room, region)]++;

@@ -22,9 +22,11 @@ struct SegmentationScores {
 /// 4-connected components of the free (0) cells; -1 on blocked cells.
 [[nodiscard]] GridMap<std::int32_t> free_components(const BinaryGrid& blocked);
 
-/// Scores `regions` (id >= 0 per cell, -1 none) against `rooms` (same). Throws voronav::Error when
-/// the sizes differ.
+/// Scores `regions` (id >= 0 per cell, -1 none) against `rooms` (same). Rooms with fewer than
+/// `min_room_cells` cells (specks of free pixels inside walls of drawn ground truths) are ignored
+/// like walls. Throws voronav::Error when the sizes differ.
 [[nodiscard]] SegmentationScores segmentation_scores(const GridMap<std::int32_t>& regions,
-                                                     const GridMap<std::int32_t>& rooms);
+                                                     const GridMap<std::int32_t>& rooms,
+                                                     std::size_t min_room_cells = 0);
 
 }  // namespace voronav::topology

@@ -22,6 +22,12 @@ TEST(Segmentation, HandComputedScores) {
   EXPECT_DOUBLE_EQ(s.recall, (4.0 / 6.0 + 4.0 / 4.0) / 2.0);
   EXPECT_DOUBLE_EQ(s.precision, (4.0 / 4.0 + 4.0 / 6.0) / 2.0);
   EXPECT_DOUBLE_EQ(segmentation_scores(rooms, rooms).recall, 1.0);
+  // Ignoring rooms under 5 cells leaves room 0 (6 cells) only, and region 1 overlaps it by 2.
+  const SegmentationScores big = segmentation_scores(regions, rooms, 5);
+  EXPECT_EQ(big.rooms, 1);
+  EXPECT_EQ(big.regions, 2);
+  EXPECT_DOUBLE_EQ(big.recall, 4.0 / 6.0);
+  EXPECT_DOUBLE_EQ(big.precision, (4.0 / 4.0 + 2.0 / 2.0) / 2.0);
   EXPECT_THROW((void)segmentation_scores(rooms, GridMap<std::int32_t>(3, 1, 0)), Error);
 }
 
