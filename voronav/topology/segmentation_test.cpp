@@ -45,15 +45,16 @@ TEST(Segmentation, TwoRoomsAreSegmentedPerfectly) {
   EXPECT_DOUBLE_EQ(s.precision, 1.0);
 }
 
-// A real floor plan from the bundled data (ipa_room_segmentation, Freiburg52_scan, 643 x 354): the issue
-// asks for recall and precision above the published 95.0 % / 94.8 %.
+// A real floor plan from the bundled data (ipa_room_segmentation, Freiburg52_scan, 643 x 354): the
+// issue asks for recall and precision above the published 95.0 % / 94.8 %.
 TEST(Segmentation, RealFloorPlanBeatsThePublishedVoronoiSegmentation) {
   const std::string dir = std::string(VORONAV_SOURCE_DIR) + "/data/floorplans/";
   io::FloorplanOptions fo;
   fo.occupied_below = 250;
   fo.free_from = 250;
   const BinaryGrid map = binarize(io::load_floorplan(dir + "Freiburg52_scan.png", fo));
-  const BinaryGrid truth = binarize(io::load_floorplan(dir + "Freiburg52_scan_gt_segmentation.png", fo));
+  const BinaryGrid truth =
+      binarize(io::load_floorplan(dir + "Freiburg52_scan_gt_segmentation.png", fo));
   const TopologicalMap m = build_topological_map(map);
   const SegmentationScores s = segmentation_scores(m.region, free_components(truth), 400);
   EXPECT_EQ(s.rooms, 10);
