@@ -53,13 +53,11 @@ void run(const ReplayArgs& a) {
                 {"start_s", rec.start_time()},
                 {"end_s", rec.end_time()}});
   } else {
-    std::cout << "replay page: " << fs::absolute(page).string() << " (" << bytes / 1024
-              << " KiB)\n"
+    std::cout << "replay page: " << fs::absolute(page).string() << " (" << bytes / 1024 << " KiB)\n"
               << "recording:   " << fs::absolute(recording_file).string() << "\n"
               << "shows:       " << rec.robots.size() << " robots, " << rec.messages.size()
               << " messages, " << rec.rasters.size() + rec.graphs.size() << " map layers, "
-              << rec.plots.size() << " plots over " << rec.end_time() - rec.start_time()
-              << " s\n"
+              << rec.plots.size() << " plots over " << rec.end_time() - rec.start_time() << " s\n"
               << "open it in a browser (no network needed).\n";
   }
 }
@@ -68,15 +66,14 @@ void setup(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "replay", "Write a self-contained replay page (index.html) for a recorded run");
   auto args = std::make_shared<ReplayArgs>();
-  auto* rec = cmd->add_option("--recording", args->recording,
-                              "Recording JSON (format: docs/replay.md)");
+  auto* rec =
+      cmd->add_option("--recording", args->recording, "Recording JSON (format: docs/replay.md)");
   auto* ex = cmd->add_flag("--example", args->example,
                            "Use a synthetic example recording (3 robots in an office); also "
                            "writes it to DIR/recording.json");
   rec->excludes(ex);
   ex->excludes(rec);
-  cmd->add_option("--out", args->out, "Output directory; the page is DIR/index.html")
-      ->required();
+  cmd->add_option("--out", args->out, "Output directory; the page is DIR/index.html")->required();
   cmd->add_flag("--json", args->json,
                 "JSON output: index_html, recording, bytes, robots, messages, layers, plots, "
                 "start_s, end_s");
