@@ -6,6 +6,10 @@ foreach(case IN ITEMS example_and_roundtrip hand_written_recording errors)
                    $<TARGET_FILE:voronav_cli> ${PROJECT_SOURCE_DIR} ${case})
   set_tests_properties(cli.viewer.${case} PROPERTIES LABELS cli TIMEOUT 120)
 endforeach()
+add_test(NAME cli.viewer.js_syntax
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/cli_viewer.py
+                 $<TARGET_FILE:voronav_cli> ${PROJECT_SOURCE_DIR} js_syntax)
+set_tests_properties(cli.viewer.js_syntax PROPERTIES LABELS cli TIMEOUT 60 SKIP_RETURN_CODE 77)
 
 add_test(NAME browser.replay
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/browser/run.sh $<TARGET_FILE:voronav_cli>

@@ -92,7 +92,26 @@ def case_errors():
         check("directory" in e, e)
 
 
-CASES = {"example_and_roundtrip": case_example_and_roundtrip,
+def case_js_syntax():
+    """The page's script parses (node --check); exit 77 (skipped) when node is missing."""
+    import shutil
+    node = shutil.which("node")
+    if not node:
+        print("SKIP: node not found")
+        sys.exit(77)
+    with open(os.path.join(ROOT, "voronav", "report", "viewer.html"), encoding="ascii") as f:
+        html = f.read()  # ascii: the template must stay ASCII-only (embedded by CMake in chunks)
+    scripts = re.findall(r"<script>(.*?)</script>", html, re.S)
+    check(len(scripts) == 1, f"expected one code script in viewer.html, found {len(scripts)}")
+    with tempfile.TemporaryDirectory() as d:
+        js = os.path.join(d, "viewer.js")
+        with open(js, "w") as f:
+            f.write(scripts[0])
+        p = subprocess.run([node, "--check", js], capture_output=True, text=True)
+        check(p.returncode == 0, "viewer.html script has a syntax error:\n" + p.stderr)
+
+
+CASES = {"example_and_roundtrip": case_example_and_roundtrip, "js_syntax": case_js_syntax,
          "hand_written_recording": case_hand_written_recording, "errors": case_errors}
 if CASE not in CASES:
     sys.exit(f"unknown case {CASE}; cases: {', '.join(CASES)}")

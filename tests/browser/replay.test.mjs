@@ -2,14 +2,15 @@
 // driven by playwright-core. Usage: node replay.test.mjs PAGE.html SCREENSHOT.png
 // Checks: no console errors and no network requests, the map canvas is drawn, toggling a layer
 // changes pixels (and toggling back restores them), the time slider moves the robots, play
-// advances time and pause stops it, the plots are drawn; saves a screenshot.
+// advances time and pause stops it, the plots are drawn; saves a screenshot. With TEMPLATE.html
+// (voronav/report/viewer.html) also checks that the bare template explains itself.
 import { chromium } from "playwright-core";
 import fs from "node:fs";
 import os from "node:os";
 import path from "node:path";
 import { pathToFileURL } from "node:url";
 
-const [pagePath, screenshotPath] = process.argv.slice(2);
+const [pagePath, screenshotPath, templatePath] = process.argv.slice(2);
 if (!pagePath || !screenshotPath) {
   console.error("usage: node replay.test.mjs PAGE.html SCREENSHOT.png");
   process.exit(2);
@@ -163,6 +164,15 @@ try {
   await page.evaluate(() => window.voronav.setTime(6.2));
   await page.screenshot({ path: screenshotPath, fullPage: true });
   check(fs.statSync(screenshotPath).size > 20000, `screenshot saved: ${screenshotPath}`);
+
+  // The bare template (no recording embedded) explains itself instead of failing.
+  if (templatePath) {
+    await page.goto(pathToFileURL(path.resolve(templatePath)).href);
+    await page.waitForFunction(() => window.voronav !== undefined, null, { timeout: 20000 });
+    const msg = await page.textContent("#error");
+    check(await page.isVisible("#error") && msg.includes("no recording is embedded"),
+          "the bare template says that no recording is embedded");
+  }
 
   check(errors.length === 0, "no console errors or warnings" + (errors.length ? ": " + errors.join(" | ") : ""));
   check(requests.length === 0, "no network requests" + (requests.length ? ": " + requests.join(", ") : ""));

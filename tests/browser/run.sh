@@ -32,4 +32,5 @@ fi
 
 rm -rf "$work/page"
 "$bin" replay --example --out "$work/page" >/dev/null
-node "$work/replay.test.mjs" "$work/page/index.html" "$work/replay.png"
+node "$work/replay.test.mjs" "$work/page/index.html" "$work/replay.png" \
+  "$here/../../voronav/report/viewer.html"
