@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -68,6 +69,9 @@ TEST(Recording, ExampleRoundTripsExactlyThroughAFile) {
 
 TEST(Recording, RandomRastersRoundTrip) {
   std::mt19937 rng(42);
+  // Labels over the whole int32 range, extremes included.
+  std::uniform_int_distribution<std::int32_t> label(std::numeric_limits<std::int32_t>::min(),
+                                                    std::numeric_limits<std::int32_t>::max());
   for (int trial = 0; trial < 20; ++trial) {
     Recording r;
     const int w = 1 + static_cast<int>(rng() % 40), h = 1 + static_cast<int>(rng() % 30);
@@ -77,7 +81,7 @@ TEST(Recording, RandomRastersRoundTrip) {
     for (std::size_t k = 0; k < r.map.size(); ++k) {
       const int v = static_cast<int>(rng() % 4);
       r.map[k] = v == 0 ? kOccupied : v == 1 ? kUnknown : static_cast<std::int8_t>(rng() % 101);
-      layer.cells[k] = (rng() % 3 == 0) ? static_cast<std::int32_t>(rng()) - (1 << 30) : 0;
+      layer.cells[k] = (rng() % 3 == 0) ? label(rng) : 0;
     }
     r.rasters.push_back(layer);
     EXPECT_EQ(from_json(to_json(r)), r) << "trial " << trial;
