@@ -9,7 +9,7 @@ build=${1:-$root/build/default}
 cmake --build "$build" --target report_bench >/dev/null
 mkdir -p "$root/bench/results"
 json=$(mktemp)
-"$build/bin/report_bench" --benchmark_min_time=0.3s --benchmark_format=json >"$json"
+"$build/bin/report_bench" --benchmark_min_time=0.3 --benchmark_format=json >"$json"
 python3 - "$json" "$root/bench/results/report.md" <<'PY'
 import json, sys, datetime
 data = json.load(open(sys.argv[1]))
