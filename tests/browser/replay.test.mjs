@@ -3,14 +3,15 @@
 // Checks: no console errors and no network requests, the map canvas is drawn, toggling a layer
 // changes pixels (and toggling back restores them), the time slider moves the robots, play
 // advances time and pause stops it, the plots are drawn; saves a screenshot. With TEMPLATE.html
-// (voronav/report/viewer.html) also checks that the bare template explains itself.
+// (voronav/report/viewer.html) also checks that the bare template explains itself, and with
+// MINIMAL.html (a page of a map-only recording) that an almost empty recording shows cleanly.
 import { chromium } from "playwright-core";
 import fs from "node:fs";
 import os from "node:os";
 import path from "node:path";
 import { pathToFileURL } from "node:url";
 
-const [pagePath, screenshotPath, templatePath] = process.argv.slice(2);
+const [pagePath, screenshotPath, templatePath, minimalPath] = process.argv.slice(2);
 if (!pagePath || !screenshotPath) {
   console.error("usage: node replay.test.mjs PAGE.html SCREENSHOT.png");
   process.exit(2);
@@ -172,6 +173,18 @@ try {
     const msg = await page.textContent("#error");
     check(await page.isVisible("#error") && msg.includes("no recording is embedded"),
           "the bare template says that no recording is embedded");
+  }
+
+  // A minimal recording (a map and nothing else) shows without errors.
+  if (minimalPath) {
+    await page.goto(pathToFileURL(path.resolve(minimalPath)).href);
+    await page.waitForFunction(() => window.voronav && window.voronav.ready, null, { timeout: 20000 });
+    const m = await mapStats();
+    check(m.nonBackground > 0.3 * m.pixels, `a map-only recording is drawn (${m.nonBackground} px)`);
+    await page.click("#play");
+    await page.waitForTimeout(200);
+    const st = await page.evaluate(() => window.voronav.state());
+    check(!st.playing && st.time === 0 && st.end === 0, "play on a recording without time stops at once");
   }
 
   check(errors.length === 0, "no console errors or warnings" + (errors.length ? ": " + errors.join(" | ") : ""));

@@ -32,5 +32,15 @@ fi
 
 rm -rf "$work/page"
 "$bin" replay --example --out "$work/page" >/dev/null
+# A map-only recording: 40 x 30 cells, a wall across the middle.
+python3 - "$work/minimal.json" <<'PY'
+import json, sys
+occ = [0, 40 * 14, 100, 40 * 2, 0, 40 * 14]
+json.dump({"format": "voronav-recording", "version": 1, "title": "map only",
+           "map": {"width": 40, "height": 30, "resolution": 0.25, "occupancy": occ}},
+          open(sys.argv[1], "w"))
+PY
+rm -rf "$work/minimal"
+"$bin" replay --recording "$work/minimal.json" --out "$work/minimal" >/dev/null
 node "$work/replay.test.mjs" "$work/page/index.html" "$work/replay.png" \
-  "$here/../../voronav/report/viewer.html"
+  "$here/../../voronav/report/viewer.html" "$work/minimal/index.html"
