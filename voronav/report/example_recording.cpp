@@ -288,7 +288,7 @@ Recording make_example_recording(const ExampleOptions& o) {
   for (double t = 1.0; t <= end; t += 1.0)
     for (const auto& r : rs)
       send(t + 0.1 * r.id, r.id, "Path", 16 + 8 * static_cast<std::int64_t>(r.waypoints.size()));
-  send(kChangeTime + 0.1, 1, "Repair", 96);
+  send(kChangeTime + 0.15, 1, "Repair", 96);
   std::sort(rec.messages.begin(), rec.messages.end(),
             [](const MessageRecord& a, const MessageRecord& b) { return a.t < b.t; });
 
