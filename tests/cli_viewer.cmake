@@ -1,6 +1,6 @@
 # End-to-end tests of `voronav replay` (tests/cli_viewer.py) and of the replay page in a real
 # browser (tests/browser/run.sh: Debian chromium + playwright-core from npm; label "browser").
-foreach(case IN ITEMS example_and_roundtrip hand_written_recording errors)
+foreach(case IN ITEMS example_and_roundtrip hand_written_recording map_only errors)
   add_test(NAME cli.viewer.${case}
            COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/cli_viewer.py
                    $<TARGET_FILE:voronav_cli> ${PROJECT_SOURCE_DIR} ${case})

@@ -66,6 +66,19 @@ def case_hand_written_recording():
         check(back["map"]["occupancy"] == [0, 1, 100, 1] and back["robots"][0]["id"] == 4, str(back))
 
 
+def case_map_only():
+    ros = os.path.join(ROOT, "data", "ros_maps", "turtlebot3_world", "map.yaml")
+    with tempfile.TemporaryDirectory() as d:
+        out = json.loads(run("replay", "--map", ros, "--out", d, "--json").stdout)
+        check(out["robots"] == 0 and out["end_s"] == 0, str(out))
+        _, rec = embedded(out["index_html"])
+        m = rec["map"]
+        check(m["resolution"] == 0.05 and sum(m["occupancy"][1::2]) == m["width"] * m["height"], str(m.keys()))
+        check(any(v == 100 for v in m["occupancy"][0::2]) and any(v == 0 for v in m["occupancy"][0::2]),
+              "the map has free and occupied cells")
+        run("replay", "--map", ros, "--example", "--out", d, expect=2)
+
+
 def case_errors():
     with tempfile.TemporaryDirectory() as d:
         missing = os.path.join(d, "nope.json")
@@ -73,7 +86,7 @@ def case_errors():
         check("nope.json" in e, e)
         run("replay", "--example", "--recording", missing, "--out", d, expect=2)
         e = run("replay", "--out", d, expect=2).stderr
-        check("--recording" in e and "--example" in e, e)
+        check("--recording" in e and "--example" in e and "--map" in e, e)
         run("replay", "--example", expect=2)  # --out is required
         bad = os.path.join(d, "bad.json")
         with open(bad, "w") as f:
@@ -112,7 +125,8 @@ def case_js_syntax():
 
 
 CASES = {"example_and_roundtrip": case_example_and_roundtrip, "js_syntax": case_js_syntax,
-         "hand_written_recording": case_hand_written_recording, "errors": case_errors}
+         "hand_written_recording": case_hand_written_recording, "map_only": case_map_only,
+         "errors": case_errors}
 if CASE not in CASES:
     sys.exit(f"unknown case {CASE}; cases: {', '.join(CASES)}")
 CASES[CASE]()

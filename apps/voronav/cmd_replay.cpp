@@ -1,11 +1,13 @@
 // voronav replay: turns a recording JSON (docs/replay.md) into a self-contained replay page
-// DIR/index.html, or writes a synthetic example recording and its page (issue 9).
+// DIR/index.html, writes a synthetic example recording and its page, or shows a map file alone
+// (issue 9).
 #include <filesystem>
 #include <iostream>
 
 #include "cli_common.hpp"
 #include "command.hpp"
 #include "voronav/core/error.hpp"
+#include "voronav/io/map_loader.hpp"
 #include "voronav/report/example_recording.hpp"
 #include "voronav/report/replay_html.hpp"
 
@@ -17,13 +19,16 @@ namespace fs = std::filesystem;
 struct ReplayArgs {
   fs::path recording;
   bool example = false;
+  fs::path map;
   fs::path out;
   bool json = false;
 };
 
 void run(const ReplayArgs& a) {
-  if (a.recording.empty() == !a.example)
-    throw Error("voronav replay", 0, "give exactly one of --recording FILE or --example");
+  const int sources = (a.recording.empty() ? 0 : 1) + (a.example ? 1 : 0) + (a.map.empty() ? 0 : 1);
+  if (sources != 1)
+    throw Error("voronav replay", 0,
+                "give exactly one of --recording FILE, --example or --map FILE");
   if (a.out.empty()) throw Error("--out", 0, "an output directory is required");
   std::error_code ec;
   if (fs::exists(a.out, ec) && !fs::is_directory(a.out, ec))
@@ -35,6 +40,12 @@ void run(const ReplayArgs& a) {
   fs::path recording_file = a.recording;
   if (a.example) {
     rec = report::make_example_recording();
+    recording_file = a.out / "recording.json";
+    report::save_recording(rec, recording_file.string());
+  } else if (!a.map.empty()) {
+    rec.map = io::load_map(a.map).grid;
+    rec.title = "Map " + a.map.filename().string();
+    rec.description = "The occupancy grid of " + a.map.string() + " (no recorded run).";
     recording_file = a.out / "recording.json";
     report::save_recording(rec, recording_file.string());
   } else {
@@ -71,8 +82,12 @@ void setup(CLI::App& app) {
   auto* ex = cmd->add_flag("--example", args->example,
                            "Use a synthetic example recording (3 robots in an office); also "
                            "writes it to DIR/recording.json");
+  auto* map = cmd->add_option("--map", args->map,
+                              "Show a map file alone (ROS .yaml, Moving AI .map, floor plan "
+                              ".png/.pgm); also writes DIR/recording.json");
   rec->excludes(ex);
-  ex->excludes(rec);
+  rec->excludes(map);
+  ex->excludes(map);
   cmd->add_option("--out", args->out, "Output directory; the page is DIR/index.html")->required();
   cmd->add_flag("--json", args->json,
                 "JSON output: index_html, recording, bytes, robots, messages, layers, plots, "
