@@ -136,6 +136,21 @@ try {
   await snap("t6.05");
   check((await diff("t5.9", "t6.05")) > 100, "the box appears at t = 6 s");
 
+  // Zoom with the wheel, hover shows coordinates, double-click restores the view.
+  await snap("view0");
+  const box = await page.locator("#map").boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await snap("hover");
+  check((await diff("view0", "hover")) > 100, "hovering the map draws the world coordinates");
+  await page.mouse.wheel(0, -300);
+  await page.waitForTimeout(100);
+  await snap("zoomed");
+  check((await diff("hover", "zoomed")) > 10000, "the wheel zooms the map");
+  await page.mouse.dblclick(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height + 200);
+  await snap("reset");
+  check((await diff("view0", "reset")) === 0, "double-click restores the view");
+
   // Play advances time, pause stops it.
   await page.locator("#speed").selectOption("4");
   await page.evaluate(() => window.voronav.setTime(window.voronav.state().start));
