@@ -2,14 +2,12 @@
 // over a ground-truth map and reports how many cells agree with the truth.
 #include <filesystem>
 #include <iostream>
-#include <random>
 
 #include "cli_common.hpp"
 #include "command.hpp"
 #include "voronav/core/error.hpp"
-#include "voronav/field/distance_transform.hpp"
 #include "voronav/mapping/occupancy_map.hpp"
-#include "voronav/mapping/range_simulation.hpp"
+#include "voronav/mapping/sweep.hpp"
 #include "voronav/render/figure.hpp"
 
 namespace voronav::cli {
@@ -32,37 +30,16 @@ void run(const MapArgs& a) {
   const MapContext ctx = load_map_context(a.map, false);
   const BinaryGrid truth = binarize(ctx.map.grid);
   const GridGeometry& geo = truth.geometry();
-  // Sensor poses: random free cells at least `clearance` from obstacles (fixed seed).
-  const field::DistanceField df = field::distance_transform(truth, {.border_is_blocked = true});
-  std::vector<Cell> candidates;
-  const double min_d = a.clearance / geo.resolution;
-  for (std::size_t i = 0; i < truth.size(); ++i)
-    if (!truth[i] && std::sqrt(static_cast<double>(df.squared_distance[i])) >= min_d)
-      candidates.push_back(geo.cell_at(i));
-  if (candidates.empty())
-    throw Error(a.map.string(), 0, "no free cell with the requested --clearance");
-  std::mt19937_64 rng(a.seed);
-  std::uniform_int_distribution<std::size_t> pick(0, candidates.size() - 1);
-  std::uniform_real_distribution<double> yaw(-std::numbers::pi, std::numbers::pi);
-  mapping::OccupancyMap m(geo);
-  mapping::LaserSimulationOptions laser;
-  laser.noise_stddev = a.noise;
-  mapping::SonarRingOptions sonar;
-  if (a.range > 0) laser.max_range = sonar.max_range = a.range;
-  mapping::SonarModelOptions sonar_model;
-  sonar_model.max_range = sonar.max_range;
-  mapping::LaserModelOptions laser_model;
-  laser_model.max_range = laser.max_range;
-  for (int k = 0; k < a.poses; ++k) {
-    const Pose2 pose{geo.cell_center(candidates[pick(rng)]), yaw(rng)};
-    laser.seed = a.seed + static_cast<std::uint64_t>(k);
-    if (a.sensor == "laser")
-      m.insert_scan(mapping::simulate_laser_scan(truth, pose, laser), laser_model);
-    else
-      m.insert_scan(mapping::simulate_sonar_ring(truth, pose, sonar), sonar_model);
-  }
-  const OccupancyGrid built = m.threshold();
-  const mapping::CellAgreement ag = mapping::cell_agreement(built, truth);
+  mapping::SweepOptions opt;
+  opt.sensor = a.sensor == "laser" ? mapping::SweepSensor::kLaser : mapping::SweepSensor::kSonar;
+  opt.poses = a.poses;
+  opt.range = a.range;
+  opt.clearance = a.clearance;
+  opt.noise_stddev = a.noise;
+  opt.seed = a.seed;
+  const mapping::SweepResult sweep = mapping::simulate_sweep(truth, opt);
+  const mapping::OccupancyMap& m = sweep.map;
+  const mapping::CellAgreement& ag = sweep.agreement;
   if (!a.png.empty()) {
     render::Figure fig(geo, {.title = a.sensor + " map, " + std::to_string(a.poses) + " poses"});
     fig.occupancy(m.to_occupancy_grid());
