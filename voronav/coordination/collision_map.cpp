@@ -59,11 +59,12 @@ std::int64_t key(std::int64_t x, std::int64_t y) { return (x << 32) ^ (y & 0xfff
 
 }  // namespace
 
-std::vector<CollisionPoint> collision_points(const Agent& high, const Agent& low, double spacing) {
+std::vector<CollisionPoint> collision_points(const Agent& high, const Agent& low, double spacing,
+                                             double margin) {
   Resampled h, l;
   h.nodes = resample(high.path, spacing, &h.arcs);
   l.nodes = resample(low.path, spacing, &l.arcs);
-  const double thr = high.radius + low.radius + spacing;
+  const double thr = std::max(1e-9, high.radius + low.radius + margin);
   const double thr2 = thr * thr;
   // Spatial hash of the high robot's nodes with cell size thr.
   std::unordered_map<std::int64_t, std::vector<int>> hash;
@@ -103,7 +104,8 @@ std::vector<CollisionPoint> collision_points(const Agent& high, const Agent& low
 std::vector<CollisionBox> collision_boxes(const Agent& high, int high_index, const Agent& low,
                                           int low_index, double spacing,
                                           const CollisionMapOptions& options) {
-  const auto points = collision_points(high, low, spacing);
+  const double margin = options.paper_literal ? 0.0 : spacing;
+  const auto points = collision_points(high, low, spacing, margin);
   if (points.empty()) return {};
   std::vector<double> h_arcs, l_arcs;
   const auto h_nodes = resample(high.path, spacing, &h_arcs);
@@ -119,7 +121,7 @@ std::vector<CollisionBox> collision_boxes(const Agent& high, int high_index, con
   std::vector<int> component(points.size(), -1);
   std::vector<CollisionBox> boxes;
   std::vector<int> stack;
-  const double half = 0.5 * spacing;
+  const double half = options.paper_literal ? 0.0 : 0.5 * spacing;
   for (int seed = 0; seed < static_cast<int>(points.size()); ++seed) {
     if (component[static_cast<std::size_t>(seed)] >= 0) continue;
     const int c = static_cast<int>(boxes.size());

@@ -31,6 +31,10 @@ struct CollisionMapOptions {
   double node_spacing = 0.0;
   AtStart at_start = AtStart::kWait;
   AtGoal at_goal = AtGoal::kStay;
+  /// The paper's literal rule: node pairs closer than r_i + r_j, box times at the segment's
+  /// first and last node, no margin. Faster boxes, but conflicts between nodes can be missed
+  /// (the verifier then repairs them).
+  bool paper_literal = false;
 };
 
 /// Eq. 5: the range [lambda_lo, lambda_hi] within [0, 1] of the points a + lambda (b - a) that are
@@ -84,9 +88,14 @@ enum class BoxCase {
 [[nodiscard]] double effective_node_spacing(const std::vector<Agent>& agents,
                                             const CollisionMapOptions& options);
 
-/// Extended collision map of `low` against `high` (node pairs closer than r1 + r2 + spacing).
+/// Extended collision map of `low` against `high`: node pairs closer than r1 + r2 + margin
+/// (margin = spacing by default, 0 with paper_literal).
 [[nodiscard]] std::vector<CollisionPoint> collision_points(const Agent& high, const Agent& low,
-                                                           double spacing);
+                                                           double spacing, double margin);
+[[nodiscard]] inline std::vector<CollisionPoint> collision_points(const Agent& high,
+                                                                  const Agent& low, double spacing) {
+  return collision_points(high, low, spacing, spacing);
+}
 
 /// Collision boxes of `low` (index low_index) against `high` (index high_index): one box per
 /// 8-connected group of collision points, i.e. per pair of conflicting path segments.

@@ -97,6 +97,7 @@ MdNetwork build_network(const std::vector<Agent>& agents, const CollisionMapOpti
       }
       for (const auto& box : collision_boxes(agents[static_cast<std::size_t>(i)], i,
                                              agents[static_cast<std::size_t>(j)], j, h, options)) {
+        if (!(box.m() + box.d() > 0.0)) continue;  // zero-duration box (paper_literal only)
         net.add_box(i, j, box.m(), box.d());
       }
     }
@@ -151,7 +152,7 @@ Resolution resolve(const MdNetwork& net, std::span<const int> order,
         const int j = b.a == i ? b.b : b.a;
         if (rank[static_cast<std::size_t>(j)] > p) continue;  // j has lower priority
         const auto [m, d] = net.oriented(k, j, r.delays[static_cast<std::size_t>(j)], delay);
-        if (m > 0.0 && d > 0.0) {
+        if (m > kTimeEpsilon && d > kTimeEpsilon) {
           if (std::isinf(d)) {
             r.status = ResolveStatus::kNoDelaySchedule;
             r.blocked = i;

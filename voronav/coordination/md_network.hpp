@@ -27,6 +27,10 @@
 
 namespace voronav::coordination {
 
+/// Times closer than this [s] count as equal when deciding whether an arc collides (M > eps and
+/// D > eps), so that rounding cannot make the resolution loop add ever smaller delays.
+inline constexpr double kTimeEpsilon = 1e-9;
+
 /// One collision box between robots a < b: (M, D) when a has priority over b and nobody is
 /// delayed.
 struct MdBox {

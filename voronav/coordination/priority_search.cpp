@@ -32,7 +32,7 @@ double edf_cost(const MdNetwork& net, int i, int j) {
     const MdBox& b = net.boxes()[static_cast<std::size_t>(k)];
     if (b.a != j && b.b != j) continue;
     const auto [m, d] = net.oriented(k, j);
-    if (m > 0.0 && d > 0.0) c += d;
+    if (m > kTimeEpsilon && d > kTimeEpsilon) c += d;
   }
   return c;
 }
@@ -148,7 +148,7 @@ struct Exhaustive {
         const int j = b.a == i ? b.b : b.a;
         if (!placed[static_cast<std::size_t>(j)]) continue;
         const auto [m, d] = net.oriented(k, j, delays[static_cast<std::size_t>(j)], delay);
-        if (m > 0.0 && d > 0.0) {
+        if (m > kTimeEpsilon && d > kTimeEpsilon) {
           if (std::isinf(d)) return kInfinity;
           delay += d;
           changed = true;
@@ -463,8 +463,8 @@ class Ga {
         const double cur = pop.front().res.makespan;
         out.best_per_round.push_back(cur);
         const bool both_finite = std::isfinite(cur) && std::isfinite(prev);
-        const double change = both_finite ? std::abs(prev - cur) / std::max(std::abs(prev), kEps)
-                                          : (std::isinf(cur) && std::isinf(prev) ? 1.0 : 1.0);
+        const double change =
+            both_finite ? std::abs(prev - cur) / std::max(std::abs(prev), kEps) : 1.0;
         prev = cur;
         if (both_finite && change < o_.convergence) break;
       }
