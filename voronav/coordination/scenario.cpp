@@ -174,6 +174,10 @@ PlannedAgents plan_agents(const Scenario& s) {
   const std::string src = s.source.string();
   std::optional<BinaryGrid> blocked;
   if (s.map) blocked = binarize(s.map->grid);
+  // Radii of all robots decide the node spacing h; the boxes see parked robots up to r_i + r_j + h.
+  std::vector<Agent> probe;
+  for (const auto& r : s.robots) probe.push_back({r.id, TimedPath({{0, 0}}, {1.0, kInfinity}), r.radius});
+  const double h = effective_node_spacing(probe, s.map_options);
   struct Ends {
     Cell start, goal;
   };
@@ -198,7 +202,7 @@ PlannedAgents plan_agents(const Scenario& s) {
       BinaryGrid avoid = base;
       for (std::size_t j = 0; j < s.robots.size(); ++j) {
         if (j == i || !s.robots[j].path.empty()) continue;
-        const double reach = r.radius + s.robots[j].radius;
+        const double reach = r.radius + s.robots[j].radius + h;
         for (const Cell c : {ends[j].start, ends[j].goal}) {
           const Vec2 p = g.cell_center(c);
           const int span = static_cast<int>(std::ceil(reach / g.resolution)) + 1;

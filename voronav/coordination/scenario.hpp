@@ -3,7 +3,8 @@
 // and an optional explicit path) and the MAPF benchmark (map + .scen, the first k rows are k
 // robots). Paths are planned with the grid planner (A* on the map inflated by each robot's
 // radius). Following the paper's assumption that no path passes through another robot's start or
-// goal, the planner first tries with those discs blocked and falls back to the plain map.
+// goal, the planner first tries with those discs (radius r_i + r_j + node spacing) blocked and
+// falls back to the plain map.
 //
 // Scenario YAML:
 //   map: arena.map              # relative to the scenario file; optional when every robot has a path
