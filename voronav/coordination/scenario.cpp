@@ -53,7 +53,11 @@ Scenario load_scenario(const fs::path& path) {
   s.source = path;
   if (root["map"]) {
     const fs::path map_path = path.parent_path() / root["map"].as<std::string>();
-    s.map = io::load_map(map_path);
+    try {
+      s.map = io::load_map(map_path);
+    } catch (const Error& e) {
+      throw Error(src, line_of(root["map"]), std::string("map: ") + e.what());
+    }
     s.cell_coordinates = s.map->format == io::MapFormat::kMovingAi;
   }
   if (root["coordinates"]) {
