@@ -318,9 +318,12 @@ TEST(Coordinate, RobotParkedOnAPathHasNoDelayScheduleInOneOrder) {
 
 // ---------------------------------------------------------------- priority search
 
-TEST(Edf, ReproducesTable4) {
-  const MdNetwork net = table4_network();
-  const EdfResult r = bottom_level_edf(net);
+class Table4 : public ::testing::TestWithParam<EdfCost> {};
+
+TEST_P(Table4, EdfReproducesTheTable) {
+  const MdNetwork net =
+      GetParam() == EdfCost::kSharedTime ? table4_network() : table4_network_delay_reading();
+  const EdfResult r = bottom_level_edf(net, EdfOptions{GetParam()});
   EXPECT_DOUBLE_EQ(r.deadline, 55.0);
   EXPECT_EQ(r.removal_order, (std::vector<int>{3, 2, 4, 0, 1}));  // A4, A3, A5, A1, A2
   EXPECT_TRUE(r.urgent_group.empty());
@@ -350,6 +353,8 @@ TEST(Edf, ReproducesTable4) {
   so.edf_reduction = false;
   EXPECT_DOUBLE_EQ(search_priority(net, so).resolution.makespan, 55.0);
 }
+INSTANTIATE_TEST_SUITE_P(Readings, Table4,
+                         ::testing::Values(EdfCost::kSharedTime, EdfCost::kDelay));
 
 TEST(Search, ExhaustiveIsOptimalOnSmallNetworks) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
@@ -444,7 +449,7 @@ std::vector<Agent> random_scenario(std::mt19937& rng, int n) {
 TEST(Property, EveryReturnedScheduleIsCollisionFreeInContinuousTime) {
   std::mt19937 rng(2024);
   int valid = 0, blocked = 0;
-  for (int trial = 0; trial < 40; ++trial) {
+  for (int trial = 0; trial < 80; ++trial) {
     const int n = 3 + trial % 6;
     const auto agents = random_scenario(rng, n);
     CoordinateOptions o;
@@ -469,7 +474,7 @@ TEST(Property, EveryReturnedScheduleIsCollisionFreeInContinuousTime) {
     EXPECT_TRUE(verify_schedule(agents, r.delays, v).valid);
     ++valid;
   }
-  EXPECT_GT(valid, 20);
+  EXPECT_GT(valid, 40);
 }
 
 TEST(Property, CoarseNodeSpacingIsRepairedAndReported) {

@@ -9,6 +9,18 @@
 namespace voronav::coordination {
 
 MdNetwork table4_network() {
+  // Robots A1..A5 are indices 0..4. With the symmetric arc cost k0 = M + D the table fixes
+  // k0(1,2)=13, k0(1,3)=7, k0(1,4)=11, k0(1,5)=9, k0(2,3)=8, k0(2,5)=4, k0(3,4)=7, k0(3,5)=8,
+  // no box for (2,4), (4,5), and T^traveled = 34, 55, 26, 35, 38 s (A2's 80 s in round 1 then
+  // follows). The split of k0 into M and D is not in the table; we take M = D = k0 / 2.
+  MdNetwork net({34.0, 55.0, 26.0, 35.0, 38.0});
+  const int pairs[8][2] = {{0, 1}, {0, 2}, {0, 3}, {0, 4}, {1, 2}, {1, 4}, {2, 3}, {2, 4}};
+  const double k0[8] = {13, 7, 11, 9, 8, 4, 7, 8};
+  for (int k = 0; k < 8; ++k) net.add_box(pairs[k][0], pairs[k][1], k0[k] / 2.0, k0[k] / 2.0);
+  return net;
+}
+
+MdNetwork table4_network_delay_reading() {
   // Robots A1..A5 are indices 0..4. Travel times and arc costs c(i, j) = the delay i gets below j
   // (see docs/reproductions/coordination.md for the derivation from Table 4).
   MdNetwork net({45.0, 55.0, 43.0, 46.0, 46.0});

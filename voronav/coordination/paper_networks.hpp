@@ -12,7 +12,10 @@
 
 namespace voronav::coordination {
 
+/// Table 4 under the default EDF reading (arc cost k0 = M + D, EdfCost::kSharedTime).
 [[nodiscard]] MdNetwork table4_network();
+/// Table 4 under the other reading (arc cost = delay below the other robot, EdfCost::kDelay).
+[[nodiscard]] MdNetwork table4_network_delay_reading();
 
 struct RandomNetworkOptions {
   double travel_min = 40.0, travel_max = 80.0;  ///< T^traveled range [s]

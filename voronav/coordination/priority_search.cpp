@@ -25,14 +25,18 @@ void check_split(const MdNetwork& net, const std::vector<int>& searched,
   check_order(concat(searched, suffix), net.size());
 }
 
-/// c(i, j) of the EDF scheduler: the delay robot i gets below j, summed over their boxes.
-double edf_cost(const MdNetwork& net, int i, int j) {
+/// c(i, j) of the EDF scheduler, summed over the boxes of i and j.
+double edf_cost(const MdNetwork& net, int i, int j, EdfCost kind) {
   double c = 0.0;
   for (const int k : net.incident(i)) {
     const MdBox& b = net.boxes()[static_cast<std::size_t>(k)];
     if (b.a != j && b.b != j) continue;
     const auto [m, d] = net.oriented(k, j);
-    if (m > kTimeEpsilon && d > kTimeEpsilon) c += d;
+    if (kind == EdfCost::kSharedTime) {
+      c += m + d;
+    } else if (m > kTimeEpsilon && d > kTimeEpsilon) {
+      c += d;
+    }
   }
   return c;
 }
@@ -44,7 +48,7 @@ bool better(const Resolution& a, const Resolution& b) {
   return a.sum_of_arrivals < b.sum_of_arrivals - kEps;
 }
 
-EdfResult bottom_level_edf(const MdNetwork& net) {
+EdfResult bottom_level_edf(const MdNetwork& net, const EdfOptions& options) {
   const int n = net.size();
   EdfResult r;
   for (const double t : net.travel_times()) r.deadline = std::max(r.deadline, t);
@@ -55,7 +59,7 @@ EdfResult bottom_level_edf(const MdNetwork& net) {
     for (const int k : net.incident(i)) {
       const MdBox& b = net.boxes()[static_cast<std::size_t>(k)];
       const int j = b.a == i ? b.b : b.a;
-      cost[static_cast<std::size_t>(i * n + j)] = edf_cost(net, i, j);
+      cost[static_cast<std::size_t>(i * n + j)] = edf_cost(net, i, j, options.cost);
     }
   }
   while (!ug.empty()) {
@@ -531,7 +535,7 @@ SearchResult search_priority(const MdNetwork& net, const SearchOptions& options)
     return r;
   }
   std::vector<int> searched, suffix;
-  EdfResult edf = bottom_level_edf(net);
+  EdfResult edf = bottom_level_edf(net, options.edf);
   if (options.edf_reduction) {
     searched.assign(edf.order.begin(), edf.order.begin() + static_cast<std::ptrdiff_t>(edf.urgent_group.size()));
     suffix.assign(edf.order.begin() + static_cast<std::ptrdiff_t>(edf.urgent_group.size()), edf.order.end());

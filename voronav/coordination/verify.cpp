@@ -44,7 +44,10 @@ Verification verify_schedule(const std::vector<Agent>& agents, std::span<const d
       const auto [lo_j, hi_j] = window(j);
       const double lo = std::max(lo_i, lo_j);
       const double hi = std::min(hi_i, hi_j);
-      if (lo > hi) continue;
+      // Presence is half-open, [departure, arrival): a robot that appears at the instant another
+      // leaves does not meet it.
+      const bool half_open = options.at_start == AtStart::kAppear || options.at_goal == AtGoal::kLeave;
+      if (lo > hi || (lo == hi && half_open)) continue;
       const Agent& A = agents[i];
       const Agent& B = agents[j];
       const double rsum = A.radius + B.radius;

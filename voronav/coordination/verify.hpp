@@ -18,6 +18,8 @@
 
 namespace voronav::coordination {
 
+/// With kAppear / kLeave a robot is in the world on [delay, delay + travel) (half-open), so one that
+/// appears at the instant another leaves does not meet it.
 struct VerifyOptions {
   AtStart at_start = AtStart::kWait;
   AtGoal at_goal = AtGoal::kStay;
