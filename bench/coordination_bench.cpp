@@ -10,9 +10,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cmath>
 #include <cstring>
 #include <iostream>
 #include <numeric>
@@ -38,7 +38,8 @@ void BM_Resolve3FixedPriority(benchmark::State& state) {
   const auto agents = three_robots();
   const co::MdNetwork net = co::build_network(agents);
   const std::vector<int> order{0, 1, 2};
-  for (auto _ : state) benchmark::DoNotOptimize(co::resolve(net, order));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(co::resolve(net, order));
 }
 BENCHMARK(BM_Resolve3FixedPriority);
 
@@ -57,14 +58,16 @@ void BM_ResolveRandom(benchmark::State& state) {
   const co::MdNetwork net = co::random_network(n, 3 * n, 1);
   std::vector<int> order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), 0);
-  for (auto _ : state) benchmark::DoNotOptimize(co::resolve(net, order));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(co::resolve(net, order));
 }
 BENCHMARK(BM_ResolveRandom)->Arg(30)->Arg(100)->Unit(benchmark::kMicrosecond);
 
 void BM_Edf(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const co::MdNetwork net = co::random_network(n, 3 * n, 1);
-  for (auto _ : state) benchmark::DoNotOptimize(co::bottom_level_edf(net));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(co::bottom_level_edf(net));
 }
 BENCHMARK(BM_Edf)->Arg(30)->Arg(100)->Unit(benchmark::kMicrosecond);
 
@@ -73,7 +76,8 @@ void BM_Ga(benchmark::State& state) {
   const co::MdNetwork net = co::random_network(n, 2 * n, 1);
   co::SearchOptions so;
   so.edf_reduction = false;  // all n robots are searched ("n urgent agents")
-  for (auto _ : state) benchmark::DoNotOptimize(co::search_priority(net, so));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(co::search_priority(net, so));
 }
 BENCHMARK(BM_Ga)->Arg(30)->Arg(100)->Unit(benchmark::kMillisecond)->Iterations(1);
 
@@ -84,7 +88,8 @@ double stddev(const std::vector<double>& v) {
   if (v.size() < 2) return 0.0;
   const double m = mean(v);
   double s = 0.0;
-  for (const double x : v) s += (x - m) * (x - m);
+  for (const double x : v)
+    s += (x - m) * (x - m);
   return std::sqrt(s / static_cast<double>(v.size() - 1));
 }
 
@@ -92,7 +97,8 @@ void repro(int runs) {
   std::cout << "### Table 4: Bottom-level EDF on the derived 5-robot network\n\n";
   const co::MdNetwork t4 = co::table4_network();
   const co::EdfResult edf = co::bottom_level_edf(t4);
-  std::cout << "| round | A1 | A2 | A3 | A4 | A5 | UG | removed |\n|---|---|---|---|---|---|---|---|\n";
+  std::cout
+      << "| round | A1 | A2 | A3 | A4 | A5 | UG | removed |\n|---|---|---|---|---|---|---|---|\n";
   for (std::size_t k = 0; k < edf.rounds.size(); ++k) {
     const auto& r = edf.rounds[k];
     std::cout << "| " << k + 1;
@@ -111,21 +117,26 @@ void repro(int runs) {
     std::cout << "} | A" << r.removed + 1 << " |\n";
   }
   std::cout << "\nPriority order (highest first): {";
-  for (std::size_t j = 0; j < edf.order.size(); ++j) std::cout << (j ? "-" : "") << edf.order[j] + 1;
+  for (std::size_t j = 0; j < edf.order.size(); ++j)
+    std::cout << (j ? "-" : "") << edf.order[j] + 1;
   const auto res = co::resolve(t4, edf.order);
   std::cout << "}, makespan " << res.makespan << " s; delays";
-  for (int i = 0; i < 5; ++i) std::cout << " A" << i + 1 << "=" << res.delays[static_cast<std::size_t>(i)];
+  for (int i = 0; i < 5; ++i)
+    std::cout << " A" << i + 1 << "=" << res.delays[static_cast<std::size_t>(i)];
   co::SearchOptions ex;
   ex.kind = co::SearchKind::kExhaustive;
   ex.edf_reduction = false;
-  std::cout << "; exhaustive optimum " << co::search_priority(t4, ex).resolution.makespan << " s\n\n";
+  std::cout << "; exhaustive optimum " << co::search_priority(t4, ex).resolution.makespan
+            << " s\n\n";
 
   std::cout << "### Figure 17: fraction of urgent robots after EDF (" << runs << " runs each)\n\n";
   const std::vector<double> per_agent{0.5, 1.0, 1.5, 2.0, 2.5, 3.0};
   std::cout << "| N \\ intersections per robot |";
-  for (const double x : per_agent) std::cout << " " << x << " |";
+  for (const double x : per_agent)
+    std::cout << " " << x << " |";
   std::cout << "\n|---|";
-  for (std::size_t i = 0; i < per_agent.size(); ++i) std::cout << "---|";
+  for (std::size_t i = 0; i < per_agent.size(); ++i)
+    std::cout << "---|";
   std::cout << "\n";
   for (int n = 20; n <= 50; n += 10) {
     std::cout << "| " << n << " |";
@@ -151,16 +162,20 @@ void repro(int runs) {
     so.ga.seed = static_cast<std::uint64_t>(run + 1);
     const auto t0 = std::chrono::steady_clock::now();
     const auto r = co::search_priority(net, so);
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     const double tmax = *std::max_element(net.travel_times().begin(), net.travel_times().end());
     rounds.push_back(r.rounds);
     ratio.push_back(r.resolution.makespan / tmax);
     edf_ratio.push_back(co::resolve(net, co::bottom_level_edf(net).order).makespan / tmax);
   }
   std::printf("| quantity | mean ± sd | paper |\n|---|---|---|\n");
-  std::printf("| GA rounds until convergence | %.2f ± %.2f | 2.47 ± 0.96 |\n", mean(rounds), stddev(rounds));
-  std::printf("| makespan / max travel time (GA) | %.3f ± %.3f | 1.05 ± 0.03 |\n", mean(ratio), stddev(ratio));
-  std::printf("| makespan / max travel time (EDF order only) | %.3f ± %.3f | – |\n", mean(edf_ratio), stddev(edf_ratio));
+  std::printf("| GA rounds until convergence | %.2f ± %.2f | 2.47 ± 0.96 |\n", mean(rounds),
+              stddev(rounds));
+  std::printf("| makespan / max travel time (GA) | %.3f ± %.3f | 1.05 ± 0.03 |\n", mean(ratio),
+              stddev(ratio));
+  std::printf("| makespan / max travel time (EDF order only) | %.3f ± %.3f | – |\n",
+              mean(edf_ratio), stddev(edf_ratio));
   std::printf("| GA time [ms] | %.1f ± %.1f | – |\n\n", mean(ms), stddev(ms));
 }
 

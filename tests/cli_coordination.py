@@ -68,7 +68,7 @@ def case_out_and_validate():
         out = json.loads(run("coordinate", "--scenario", ARENA, "--search", "exhaustive", "--json",
                              "--out", d).stdout)
         check(out["valid"], str(out))
-        for f in ["schedule.json", "schedule.yaml", "trajectories.png", "network.svg"]:
+        for f in ["schedule.json", "schedule.yaml", "trajectories.png", "network.png"]:
             check(os.path.getsize(os.path.join(d, f)) > 100, f + " written")
         for f in ["schedule.json", "schedule.yaml"]:
             v = json.loads(run("validate-schedule", os.path.join(d, f), "--json").stdout)

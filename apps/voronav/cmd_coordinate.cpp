@@ -64,14 +64,16 @@ void draw_network(const co::MdNetwork& net, const co::CoordinationResult& r,
   render::Figure fig(g, fo);
   std::vector<Vec2> pos(static_cast<std::size_t>(n));
   std::vector<int> rank(static_cast<std::size_t>(n));
-  for (int p = 0; p < n; ++p) rank[static_cast<std::size_t>(r.order[static_cast<std::size_t>(p)])] = p;
+  for (int p = 0; p < n; ++p)
+    rank[static_cast<std::size_t>(r.order[static_cast<std::size_t>(p)])] = p;
   for (int i = 0; i < n; ++i) {
     const double a = 2.0 * std::numbers::pi * rank[static_cast<std::size_t>(i)] / std::max(1, n);
     pos[static_cast<std::size_t>(i)] = {50.0 + 40.0 * std::sin(a), 50.0 + 40.0 * std::cos(a)};
   }
   const auto arcs = co::network_for_order(net, r.order, r.delays);
   for (const auto& arc : arcs) {
-    const Vec2 a = pos[static_cast<std::size_t>(arc.high)], b = pos[static_cast<std::size_t>(arc.low)];
+    const Vec2 a = pos[static_cast<std::size_t>(arc.high)],
+               b = pos[static_cast<std::size_t>(arc.low)];
     const Vec2 dir = (b - a) / std::max(1e-9, distance(a, b));
     fig.arrow(a + dir * 3.0, b - dir * 3.0, render::colors::kGrey, 1.2);
     if (n <= 20) {
@@ -81,7 +83,8 @@ void draw_network(const co::MdNetwork& net, const co::CoordinationResult& r,
     }
   }
   for (int i = 0; i < n; ++i) {
-    fig.circle(pos[static_cast<std::size_t>(i)], 2.5, render::colors::kWhite, render::colors::kBlack);
+    fig.circle(pos[static_cast<std::size_t>(i)], 2.5, render::colors::kWhite,
+               render::colors::kBlack);
     fig.text(pos[static_cast<std::size_t>(i)] + Vec2{-1.0, -0.8},
              std::to_string(agents[static_cast<std::size_t>(i)].id), render::colors::kBlack, 11.0);
   }
@@ -94,7 +97,8 @@ void draw_collision_map(const std::vector<co::Agent>& agents, const co::Coordina
                         const co::CollisionMapOptions& mo, const std::filesystem::path& file) {
   const double h = co::effective_node_spacing(agents, mo);
   std::vector<int> rank(agents.size());
-  for (std::size_t p = 0; p < r.order.size(); ++p) rank[static_cast<std::size_t>(r.order[p])] = static_cast<int>(p);
+  for (std::size_t p = 0; p < r.order.size(); ++p)
+    rank[static_cast<std::size_t>(r.order[p])] = static_cast<int>(p);
   for (std::size_t p = 0; p < r.order.size(); ++p) {
     for (std::size_t q = p + 1; q < r.order.size(); ++q) {
       const int hi = r.order[p], lo = r.order[q];
@@ -111,7 +115,8 @@ void draw_collision_map(const std::vector<co::Agent>& agents, const co::Coordina
       const double dh = r.delays[static_cast<std::size_t>(hi)];
       const double dl = r.delays[static_cast<std::size_t>(lo)];
       std::vector<double> rx, ry;
-      for (const auto& s : co::collision_region(A, B, std::max(0.02, A.path.travel_time() / 400.0))) {
+      for (const auto& s :
+           co::collision_region(A, B, std::max(0.02, A.path.travel_time() / 400.0))) {
         for (const auto& [a, b] : s.intervals) {
           for (double l = a; l <= b; l += 0.01) {
             rx.push_back(s.t + dh);
@@ -135,7 +140,8 @@ void draw_collision_map(const std::vector<co::Agent>& agents, const co::Coordina
         tx.push_back(t);
         ty.push_back(B.path.arc_at(t - dl) / len);
       }
-      plot.line("TLVSTC (delay " + std::to_string(dl).substr(0, 5) + " s)", tx, ty, render::colors::kBlue);
+      plot.line("TLVSTC (delay " + std::to_string(dl).substr(0, 5) + " s)", tx, ty,
+                render::colors::kBlue);
       plot.save(file);
       return;
     }
@@ -145,10 +151,12 @@ void draw_collision_map(const std::vector<co::Agent>& agents, const co::Coordina
 void run(const CoordArgs& a) {
   co::Scenario sc;
   if (!a.scenario.empty()) {
-    if (!a.map.empty() || !a.scen.empty()) throw Error("--scenario", 0, "use either --scenario or --map/--scen");
+    if (!a.map.empty() || !a.scen.empty())
+      throw Error("--scenario", 0, "use either --scenario or --map/--scen");
     sc = co::load_scenario(a.scenario);
   } else {
-    if (a.map.empty() || a.scen.empty()) throw Error("--map", 0, "give --scenario FILE or --map M --scen S");
+    if (a.map.empty() || a.scen.empty())
+      throw Error("--map", 0, "give --scenario FILE or --map M --scen S");
     sc = co::load_mapf(a.map, a.scen, a.agents, a.radius);
     sc.map_options.at_start = co::AtStart::kWait;
     sc.map_options.at_goal = co::AtGoal::kStay;
@@ -174,7 +182,8 @@ void run(const CoordArgs& a) {
                          {"travel", agents[i].path.travel_time()}});
   }
   nlohmann::json order = nlohmann::json::array();
-  for (const int i : r.order) order.push_back(agents[static_cast<std::size_t>(i)].id);
+  for (const int i : r.order)
+    order.push_back(agents[static_cast<std::size_t>(i)].id);
   nlohmann::json missed = nlohmann::json::array();
   for (const auto& c : r.missed) {
     missed.push_back({{"a", agents[static_cast<std::size_t>(c.a)].id},
@@ -207,7 +216,7 @@ void run(const CoordArgs& a) {
     co::write_schedule(a.out / "schedule.yaml", s);
     draw_trajectories(sc, agents, a.out / "trajectories.png");
     if (ok) {
-      draw_network(co::build_network(agents, opt.map), r, agents, a.out / "network.svg");
+      draw_network(co::build_network(agents, opt.map), r, agents, a.out / "network.png");
       draw_collision_map(agents, r, opt.map, a.out / "collision_map.png");
     }
   }
@@ -234,11 +243,14 @@ void setup(CLI::App& app) {
       "Coordinate robots on fixed paths by start delays: collision maps, (M,D) network and "
       "priority search (seed 002)");
   auto a = std::make_shared<CoordArgs>();
-  cmd->add_option("--scenario", a->scenario, "scenario YAML (map, robots)")->check(CLI::ExistingFile);
+  cmd->add_option("--scenario", a->scenario, "scenario YAML (map, robots)")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--map", a->map, "MAPF map (Moving AI .map)")->check(CLI::ExistingFile);
-  cmd->add_option("--scen", a->scen, "MAPF .scen (first K rows = K robots)")->check(CLI::ExistingFile);
+  cmd->add_option("--scen", a->scen, "MAPF .scen (first K rows = K robots)")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--agents", a->agents, "K: number of .scen rows used")->capture_default_str();
-  cmd->add_option("--radius", a->radius, "robot radius for MAPF input [cells]")->capture_default_str();
+  cmd->add_option("--radius", a->radius, "robot radius for MAPF input [cells]")
+      ->capture_default_str();
   cmd->add_option("--search", a->search, "none | exhaustive | edf | ga")->capture_default_str();
   cmd->add_flag("--no-reduction", a->no_reduction,
                 "search all robots, not only the EDF urgent group");

@@ -51,14 +51,15 @@ void run(const ValidateArgs& a) {
   } else {
     std::cout << a.file.string() << ": " << s.agents.size() << " robots, makespan " << makespan
               << " s: " << (v.valid ? "valid" : "INVALID") << "\n";
-    for (const auto& c : conflicts) std::cout << "  overlap " << c.dump() << "\n";
+    for (const auto& c : conflicts)
+      std::cout << "  overlap " << c.dump() << "\n";
   }
   if (!v.valid) exit_code() = 1;
 }
 
 void setup(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "validate-schedule", "Check a schedule in continuous time: no two robots ever overlap");
+  auto* cmd = app.add_subcommand("validate-schedule",
+                                 "Check a schedule in continuous time: no two robots ever overlap");
   auto a = std::make_shared<ValidateArgs>();
   cmd->add_option("file", a->file, "schedule .json or .yaml")->required()->check(CLI::ExistingFile);
   cmd->add_option("--tolerance", a->tolerance, "accepted overlap depth [m]")->capture_default_str();

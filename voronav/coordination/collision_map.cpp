@@ -36,14 +36,16 @@ BoxCase classify(double m, double d) {
   return BoxCase::kLowFirst;
 }
 
-double effective_node_spacing(const std::vector<Agent>& agents, const CollisionMapOptions& options) {
+double effective_node_spacing(const std::vector<Agent>& agents,
+                              const CollisionMapOptions& options) {
   if (options.node_spacing < 0.0 || !std::isfinite(options.node_spacing)) {
     throw Error("node_spacing", 0,
                 "expected a finite spacing >= 0, got " + std::to_string(options.node_spacing));
   }
   if (options.node_spacing > 0.0) return options.node_spacing;
   double r = kInfinity;
-  for (const auto& a : agents) r = std::min(r, a.radius);
+  for (const auto& a : agents)
+    r = std::min(r, a.radius);
   if (!std::isfinite(r) || r <= 0.0) return 0.25;
   return 0.5 * r;
 }
@@ -55,7 +57,9 @@ struct Resampled {
   std::vector<double> arcs;
 };
 
-std::int64_t key(std::int64_t x, std::int64_t y) { return (x << 32) ^ (y & 0xffffffffLL); }
+std::int64_t key(std::int64_t x, std::int64_t y) {
+  return (x << 32) ^ (y & 0xffffffffLL);
+}
 
 }  // namespace
 
@@ -88,8 +92,7 @@ std::vector<CollisionPoint> collision_points(const Agent& high, const Agent& low
         for (const int n : it->second) {
           if ((h.nodes[static_cast<std::size_t>(n)] - pm).squared_norm() < thr2) {
             const double lm = low_len > 0.0 ? l.arcs[static_cast<std::size_t>(m)] / low_len : 0.0;
-            out.push_back(
-                {m, n, high.path.time_at_arc(h.arcs[static_cast<std::size_t>(n)]), lm});
+            out.push_back({m, n, high.path.time_at_arc(h.arcs[static_cast<std::size_t>(n)]), lm});
           }
         }
       }
@@ -154,13 +157,13 @@ std::vector<CollisionBox> collision_boxes(const Agent& high, int high_index, con
     const auto ll = static_cast<std::size_t>(box.low_last);
     const bool appear = options.at_start == AtStart::kAppear;
     const bool leave = options.at_goal == AtGoal::kLeave;
-    box.t1 = (box.high_first == 0 && !appear) ? -kInfinity
-                                               : high.path.time_at_arc(h_arcs[hf] - half);
-    box.t4 = (box.high_last == h_last && !leave) ? kInfinity
-                                                  : high.path.time_at_arc(h_arcs[hl] + half);
+    box.t1 =
+        (box.high_first == 0 && !appear) ? -kInfinity : high.path.time_at_arc(h_arcs[hf] - half);
+    box.t4 =
+        (box.high_last == h_last && !leave) ? kInfinity : high.path.time_at_arc(h_arcs[hl] + half);
     box.t2 = (box.low_first == 0 && !appear) ? -kInfinity : low.path.time_at_arc(l_arcs[lf] - half);
-    box.t3 = (box.low_last == l_last && !leave) ? kInfinity
-                                                 : low.path.time_at_arc(l_arcs[ll] + half);
+    box.t3 =
+        (box.low_last == l_last && !leave) ? kInfinity : low.path.time_at_arc(l_arcs[ll] + half);
     const double len = low.path.length();
     box.l_s = len > 0.0 ? std::max(0.0, l_arcs[lf] - half) / len : 0.0;
     box.l_e = len > 0.0 ? std::min(len, l_arcs[ll] + half) / len : 1.0;

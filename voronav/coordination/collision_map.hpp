@@ -56,15 +56,15 @@ struct CollisionPoint {
 /// has T_leave = +infinity. M and D are then infinite: M = inf never blocks, D = inf means no start
 /// delay of the low robot can resolve the box.
 struct CollisionBox {
-  int high = 0;  ///< index of the higher-priority robot (A1)
-  int low = 0;   ///< index of the lower-priority robot (A2)
+  int high = 0;                       ///< index of the higher-priority robot (A1)
+  int low = 0;                        ///< index of the lower-priority robot (A2)
   int high_first = 0, high_last = 0;  ///< the high robot's path segment (resampled node indices)
   int low_first = 0, low_last = 0;    ///< the low robot's path segment PS_{i,k}
-  double t1 = 0.0;  ///< A1 enters its segment
-  double t2 = 0.0;  ///< A2 enters its segment
-  double t3 = 0.0;  ///< A2 leaves its segment
-  double t4 = 0.0;  ///< A1 leaves its segment
-  double l_s = 0.0, l_e = 0.0;  ///< the low robot's segment as normalized length (box height)
+  double t1 = 0.0;                    ///< A1 enters its segment
+  double t2 = 0.0;                    ///< A2 enters its segment
+  double t3 = 0.0;                    ///< A2 leaves its segment
+  double t4 = 0.0;                    ///< A1 leaves its segment
+  double l_s = 0.0, l_e = 0.0;        ///< the low robot's segment as normalized length (box height)
 
   /// Max start delay of A2 that keeps the box collision-free: M = T3 - T1.
   [[nodiscard]] double m() const { return t3 - t1; }
@@ -93,7 +93,8 @@ enum class BoxCase {
 [[nodiscard]] std::vector<CollisionPoint> collision_points(const Agent& high, const Agent& low,
                                                            double spacing, double margin);
 [[nodiscard]] inline std::vector<CollisionPoint> collision_points(const Agent& high,
-                                                                  const Agent& low, double spacing) {
+                                                                  const Agent& low,
+                                                                  double spacing) {
   return collision_points(high, low, spacing, spacing);
 }
 

@@ -45,7 +45,8 @@ TEST(TimedPath, TrapezoidalProfile) {
   EXPECT_DOUBLE_EQ(p.arc_at(6.0), 5.0);
   EXPECT_DOUBLE_EQ(p.arc_at(11.0), 10.0 - 0.25);
   EXPECT_DOUBLE_EQ(p.speed(1.0), 0.5);
-  for (double s = 0.0; s <= 10.0; s += 0.37) EXPECT_NEAR(p.arc_at(p.time_at_arc(s)), s, 1e-12);
+  for (double s = 0.0; s <= 10.0; s += 0.37)
+    EXPECT_NEAR(p.arc_at(p.time_at_arc(s)), s, 1e-12);
 }
 
 TEST(TimedPath, TriangularProfileWhenTooShortForVmax) {
@@ -54,7 +55,8 @@ TEST(TimedPath, TriangularProfileWhenTooShortForVmax) {
   EXPECT_DOUBLE_EQ(p.travel_time(), 2.0);
   EXPECT_DOUBLE_EQ(p.arc_at(1.0), 0.5);
   EXPECT_DOUBLE_EQ(p.speed(1.0), 1.0);
-  for (double s = 0.0; s <= 1.0; s += 0.05) EXPECT_NEAR(p.arc_at(p.time_at_arc(s)), s, 1e-12);
+  for (double s = 0.0; s <= 1.0; s += 0.05)
+    EXPECT_NEAR(p.arc_at(p.time_at_arc(s)), s, 1e-12);
 }
 
 TEST(TimedPath, SingleNodeIsAParkedRobot) {
@@ -81,7 +83,8 @@ TEST(TimedPath, ResampleKeepsVerticesAndSpacing) {
   ASSERT_EQ(nodes.size(), 1u + 4u + 2u);
   EXPECT_EQ(nodes[4], (Vec2{1, 0}));
   EXPECT_EQ(nodes.back(), (Vec2{1, 0.3}));
-  for (std::size_t i = 1; i < arcs.size(); ++i) EXPECT_LE(arcs[i] - arcs[i - 1], 0.25 + 1e-12);
+  for (std::size_t i = 1; i < arcs.size(); ++i)
+    EXPECT_LE(arcs[i] - arcs[i - 1], 0.25 + 1e-12);
   EXPECT_THROW((void)resample(p, 0.0, nullptr), Error);
 }
 
@@ -141,7 +144,8 @@ TEST(CollisionMap, CrossingRobotsGiveOneBoxWithHandComputedTimes) {
   // Collision points: every node pair closer than 1.25 (81 - 4*... counted by brute force).
   int expected = 0;
   for (int i = -4; i <= 4; ++i) {
-    for (int j = -4; j <= 4; ++j) expected += (0.0625 * (i * i + j * j) < 1.5625) ? 1 : 0;
+    for (int j = -4; j <= 4; ++j)
+      expected += (0.0625 * (i * i + j * j) < 1.5625) ? 1 : 0;
   }
   EXPECT_EQ(static_cast<int>(collision_points(a1, a2, 0.25).size()), expected);
 }
@@ -225,8 +229,10 @@ TEST(MdNetwork, SymmetryRuleEqualsRecomputation) {
       auto ba = collision_boxes(b, 1, a, 0, 0.2, o);
       ASSERT_EQ(ab.size(), ba.size());
       std::vector<std::pair<double, double>> x, y;
-      for (const auto& box : ab) x.emplace_back(box.d(), box.m());  // swapped
-      for (const auto& box : ba) y.emplace_back(box.m(), box.d());
+      for (const auto& box : ab)
+        x.emplace_back(box.d(), box.m());  // swapped
+      for (const auto& box : ba)
+        y.emplace_back(box.m(), box.d());
       std::sort(x.begin(), x.end());
       std::sort(y.begin(), y.end());
       for (std::size_t k = 0; k < x.size(); ++k) {
@@ -291,7 +297,8 @@ TEST(Verify, AtStartAndAtGoalModes) {
 
 TEST(Coordinate, RobotParkedOnAPathHasNoDelayScheduleInOneOrder) {
   // Robot 2 ends on robot 1's path and stays there.
-  const std::vector<Agent> agents{make_agent(1, {{-5, 0}, {5, 0}}), make_agent(2, {{0, -5}, {0, 0}})};
+  const std::vector<Agent> agents{make_agent(1, {{-5, 0}, {5, 0}}),
+                                  make_agent(2, {{0, -5}, {0, 0}})};
   const MdNetwork net = build_network(agents);
   const std::vector<int> ok_order{0, 1}, bad_order{1, 0};
   EXPECT_EQ(resolve(net, ok_order).status, ResolveStatus::kOk);
@@ -439,7 +446,8 @@ std::vector<Agent> random_scenario(std::mt19937& rng, int n) {
   for (int i = 0; i < n; ++i) {
     std::vector<Vec2> nodes{{pos(rng), pos(rng)}};
     const int bends = kind(rng);
-    for (int b = 0; b <= bends; ++b) nodes.push_back({pos(rng), pos(rng)});
+    for (int b = 0; b <= bends; ++b)
+      nodes.push_back({pos(rng), pos(rng)});
     const double a = kind(rng) == 0 ? kInfinity : vel(rng);
     agents.push_back(make_agent(i + 1, nodes, vel(rng), a, rad(rng)));
   }

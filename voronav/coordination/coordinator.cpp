@@ -18,7 +18,8 @@ CoordinationResult coordinate(const std::vector<Agent>& agents, const Coordinate
   const VerifyOptions vopt{options.map.at_start, options.map.at_goal, options.tolerance};
   std::vector<double> min_delays(agents.size(), 0.0);
   std::vector<int> rank(agents.size(), 0);
-  for (std::size_t p = 0; p < out.order.size(); ++p) rank[static_cast<std::size_t>(out.order[p])] = static_cast<int>(p);
+  for (std::size_t p = 0; p < out.order.size(); ++p)
+    rank[static_cast<std::size_t>(out.order[p])] = static_cast<int>(p);
   while (res.status == ResolveStatus::kOk && options.verify) {
     const Verification v = verify_schedule(agents, res.delays, vopt);
     out.verified = true;
@@ -33,7 +34,8 @@ CoordinationResult coordinate(const std::vector<Agent>& agents, const Coordinate
     const Conflict& c = v.conflicts.front();
     out.missed.push_back(c);
     ++out.repairs;
-    const int low = rank[static_cast<std::size_t>(c.a)] > rank[static_cast<std::size_t>(c.b)] ? c.a : c.b;
+    const int low =
+        rank[static_cast<std::size_t>(c.a)] > rank[static_cast<std::size_t>(c.b)] ? c.a : c.b;
     const Agent& lo = agents[static_cast<std::size_t>(low)];
     const double step = std::max(0.05, (agents[static_cast<std::size_t>(c.a)].radius +
                                         agents[static_cast<std::size_t>(c.b)].radius) /
@@ -56,8 +58,9 @@ CoordinationResult coordinate(const std::vector<Agent>& agents, const Coordinate
   } else if (!options.verify) {
     out.message = "not verified";
   } else if (out.valid) {
-    out.message = out.repairs == 0 ? "ok" : "ok after repairing " + std::to_string(out.repairs) +
-                                                " conflicts the collision boxes missed";
+    out.message = out.repairs == 0 ? "ok"
+                                   : "ok after repairing " + std::to_string(out.repairs) +
+                                         " conflicts the collision boxes missed";
   } else {
     out.message = "the continuous-time check found overlaps that could not be repaired";
   }

@@ -25,21 +25,21 @@ struct CoordinateOptions {
 
 struct CoordinationResult {
   ResolveStatus status = ResolveStatus::kOk;
-  std::vector<int> order;         ///< robot indices, highest priority first
-  std::vector<double> delays;     ///< start delay per robot [s]
-  std::vector<double> arrivals;   ///< T^completed per robot [s]
-  double makespan = 0.0;          ///< max arrival [s]
-  double sum_of_arrivals = 0.0;   ///< [s]
-  bool valid = false;             ///< the continuous-time check passed
-  bool verified = false;          ///< the check was run
-  int repairs = 0;                ///< conflicts the boxes missed and that were repaired
-  std::vector<Conflict> missed;   ///< those conflicts
+  std::vector<int> order;           ///< robot indices, highest priority first
+  std::vector<double> delays;       ///< start delay per robot [s]
+  std::vector<double> arrivals;     ///< T^completed per robot [s]
+  double makespan = 0.0;            ///< max arrival [s]
+  double sum_of_arrivals = 0.0;     ///< [s]
+  bool valid = false;               ///< the continuous-time check passed
+  bool verified = false;            ///< the check was run
+  int repairs = 0;                  ///< conflicts the boxes missed and that were repaired
+  std::vector<Conflict> missed;     ///< those conflicts
   std::vector<Conflict> remaining;  ///< conflicts still present when valid == false
-  std::size_t boxes = 0;          ///< collision boxes in the network
+  std::size_t boxes = 0;            ///< collision boxes in the network
   SearchResult search;
   EdfResult edf;
-  double time_ms = 0.0;           ///< wall time of network + search + resolution + verification
-  std::string message;            ///< human-readable status
+  double time_ms = 0.0;  ///< wall time of network + search + resolution + verification
+  std::string message;   ///< human-readable status
 };
 
 [[nodiscard]] CoordinationResult coordinate(const std::vector<Agent>& agents,

@@ -140,10 +140,12 @@ Resolution resolve(const MdNetwork& net, std::span<const int> order,
   r.delays.assign(static_cast<std::size_t>(n), 0.0);
   r.completion.assign(static_cast<std::size_t>(n), 0.0);
   std::vector<int> rank(static_cast<std::size_t>(n), 0);
-  for (int p = 0; p < n; ++p) rank[static_cast<std::size_t>(order[static_cast<std::size_t>(p)])] = p;
+  for (int p = 0; p < n; ++p)
+    rank[static_cast<std::size_t>(order[static_cast<std::size_t>(p)])] = p;
   for (int p = 0; p < n; ++p) {
     const int i = order[static_cast<std::size_t>(p)];
-    double delay = min_delays.empty() ? 0.0 : std::max(0.0, min_delays[static_cast<std::size_t>(i)]);
+    double delay =
+        min_delays.empty() ? 0.0 : std::max(0.0, min_delays[static_cast<std::size_t>(i)]);
     bool changed = true;
     while (changed && r.status == ResolveStatus::kOk) {
       changed = false;
@@ -165,7 +167,8 @@ Resolution resolve(const MdNetwork& net, std::span<const int> order,
       }
     }
     r.delays[static_cast<std::size_t>(i)] = delay;
-    r.completion[static_cast<std::size_t>(i)] = net.travel_times()[static_cast<std::size_t>(i)] + delay;
+    r.completion[static_cast<std::size_t>(i)] =
+        net.travel_times()[static_cast<std::size_t>(i)] + delay;
     if (r.status != ResolveStatus::kOk) break;
   }
   r.makespan = 0.0;
@@ -186,10 +189,9 @@ std::vector<OrientedArc> network_for_order(const MdNetwork& net, std::span<const
   const int n = net.size();
   check_order(order, n);
   std::vector<int> rank(static_cast<std::size_t>(n), 0);
-  for (int p = 0; p < n; ++p) rank[static_cast<std::size_t>(order[static_cast<std::size_t>(p)])] = p;
-  auto delay_of = [&](int i) {
-    return delays.empty() ? 0.0 : delays[static_cast<std::size_t>(i)];
-  };
+  for (int p = 0; p < n; ++p)
+    rank[static_cast<std::size_t>(order[static_cast<std::size_t>(p)])] = p;
+  auto delay_of = [&](int i) { return delays.empty() ? 0.0 : delays[static_cast<std::size_t>(i)]; };
   std::vector<OrientedArc> arcs;
   for (int k = 0; k < static_cast<int>(net.boxes().size()); ++k) {
     const MdBox& b = net.boxes()[static_cast<std::size_t>(k)];

@@ -51,7 +51,8 @@ bool better(const Resolution& a, const Resolution& b) {
 EdfResult bottom_level_edf(const MdNetwork& net, const EdfOptions& options) {
   const int n = net.size();
   EdfResult r;
-  for (const double t : net.travel_times()) r.deadline = std::max(r.deadline, t);
+  for (const double t : net.travel_times())
+    r.deadline = std::max(r.deadline, t);
   std::vector<int> ug(static_cast<std::size_t>(n));
   std::iota(ug.begin(), ug.end(), 0);
   std::vector<double> cost(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), 0.0);
@@ -96,7 +97,8 @@ EdfResult bottom_level_edf(const MdNetwork& net, const EdfOptions& options) {
     });
   }
   r.order = sorted;
-  for (auto it = r.removal_order.rbegin(); it != r.removal_order.rend(); ++it) r.order.push_back(*it);
+  for (auto it = r.removal_order.rbegin(); it != r.removal_order.rend(); ++it)
+    r.order.push_back(*it);
   return r;
 }
 
@@ -208,7 +210,8 @@ SearchResult exhaustive_search(const MdNetwork& net, const std::vector<int>& sea
   ex.placed.assign(static_cast<std::size_t>(net.size()), 0);
   ex.delays.assign(static_cast<std::size_t>(net.size()), 0.0);
   for (const int i : suffix) {
-    ex.suffix_travel_max = std::max(ex.suffix_travel_max, net.travel_times()[static_cast<std::size_t>(i)]);
+    ex.suffix_travel_max =
+        std::max(ex.suffix_travel_max, net.travel_times()[static_cast<std::size_t>(i)]);
     ex.suffix_travel_sum += net.travel_times()[static_cast<std::size_t>(i)];
   }
   ex.dfs(0.0, 0.0);
@@ -235,11 +238,16 @@ class Ga {
  public:
   Ga(const MdNetwork& net, const std::vector<int>& searched, const std::vector<int>& suffix,
      const GaOptions& o)
-      : net_(net), searched_(searched), suffix_(suffix), o_(o), rng_(o.seed),
+      : net_(net),
+        searched_(searched),
+        suffix_(suffix),
+        o_(o),
+        rng_(o.seed),
         n_(static_cast<int>(searched.size())) {
     weight_.assign(static_cast<std::size_t>(n_ * n_), 0.0);
     std::vector<int> local(static_cast<std::size_t>(net.size()), -1);
-    for (int a = 0; a < n_; ++a) local[static_cast<std::size_t>(searched[static_cast<std::size_t>(a)])] = a;
+    for (int a = 0; a < n_; ++a)
+      local[static_cast<std::size_t>(searched[static_cast<std::size_t>(a)])] = a;
     for (const MdBox& b : net.boxes()) {
       const int la = local[static_cast<std::size_t>(b.a)];
       const int lb = local[static_cast<std::size_t>(b.b)];
@@ -265,7 +273,8 @@ class Ga {
     ++evaluations_;
     std::vector<int> order;
     order.reserve(seq.size() + suffix_.size());
-    for (const int l : seq) order.push_back(searched_[static_cast<std::size_t>(l)]);
+    for (const int l : seq)
+      order.push_back(searched_[static_cast<std::size_t>(l)]);
     order.insert(order.end(), suffix_.begin(), suffix_.end());
     return resolve(net_, order);
   }
@@ -291,7 +300,8 @@ class Ga {
         if (!forbidden(-1, frags[f].front())) cand.push_back(f);
       }
       if (cand.empty()) {
-        for (std::size_t f = 0; f < frags.size(); ++f) cand.push_back(f);
+        for (std::size_t f = 0; f < frags.size(); ++f)
+          cand.push_back(f);
       }
       take(cand[static_cast<std::size_t>(uniform(0, static_cast<int>(cand.size()) - 1))]);
     }
@@ -320,7 +330,8 @@ class Ga {
   std::vector<int> successors(const std::vector<int>& seq) const {
     std::vector<int> succ(static_cast<std::size_t>(n_) + 1, -2);
     succ[static_cast<std::size_t>(n_)] = seq.front();  // virtual start node
-    for (std::size_t k = 0; k + 1 < seq.size(); ++k) succ[static_cast<std::size_t>(seq[k])] = seq[k + 1];
+    for (std::size_t k = 0; k + 1 < seq.size(); ++k)
+      succ[static_cast<std::size_t>(seq[k])] = seq[k + 1];
     succ[static_cast<std::size_t>(seq.back())] = -1;
     return succ;
   }
@@ -352,7 +363,8 @@ class Ga {
     std::iota(pos.begin(), pos.end(), 0);
     std::shuffle(pos.begin(), pos.end(), rng_);
     std::vector<char> cut(static_cast<std::size_t>(edges), 0);
-    for (int i = 0; i < k; ++i) cut[static_cast<std::size_t>(pos[static_cast<std::size_t>(i)])] = 1;
+    for (int i = 0; i < k; ++i)
+      cut[static_cast<std::size_t>(pos[static_cast<std::size_t>(i)])] = 1;
     std::vector<std::vector<int>> frags{{seq.front()}};
     std::vector<int> removed_succ(static_cast<std::size_t>(n_) + 1, -2);
     removed_succ[static_cast<std::size_t>(n_)] = seq.front();
@@ -405,7 +417,8 @@ class Ga {
     std::vector<int> seed_local;
     if (!seed_order.empty()) {
       std::vector<int> local(static_cast<std::size_t>(net_.size()), -1);
-      for (int a = 0; a < n_; ++a) local[static_cast<std::size_t>(searched_[static_cast<std::size_t>(a)])] = a;
+      for (int a = 0; a < n_; ++a)
+        local[static_cast<std::size_t>(searched_[static_cast<std::size_t>(a)])] = a;
       for (const int g : seed_order) {
         if (g < 0 || g >= net_.size() || local[static_cast<std::size_t>(g)] < 0) {
           throw Error("seed_order", 0, "robot " + std::to_string(g) + " is not searched");
@@ -436,7 +449,8 @@ class Ga {
         const int a = uniform(0, pop_size - 1);
         int b = uniform(0, pop_size - 2);
         if (b >= a) ++b;
-        std::vector<int> child = dpx(pop[static_cast<std::size_t>(a)].seq, pop[static_cast<std::size_t>(b)].seq);
+        std::vector<int> child =
+            dpx(pop[static_cast<std::size_t>(a)].seq, pop[static_cast<std::size_t>(b)].seq);
         if (unit() < o_.mutation_rate) child = mutate(child);
         Individual ind = make(std::move(child));
         three_opt(ind);
@@ -448,7 +462,8 @@ class Ga {
       // children, without duplicates.
       std::vector<Individual> next(pop.begin(), pop.begin() + elite);
       std::vector<Individual> pool(pop.begin() + elite, pop.end());
-      for (auto& ch : children) pool.push_back(std::move(ch));
+      for (auto& ch : children)
+        pool.push_back(std::move(ch));
       std::stable_sort(pool.begin(), pool.end(), by_quality);
       for (auto& ind : pool) {
         if (static_cast<int>(next.size()) >= pop_size) break;
@@ -474,7 +489,8 @@ class Ga {
       }
     }
     const Individual& best = pop.front();
-    for (const int l : best.seq) out.order.push_back(searched_[static_cast<std::size_t>(l)]);
+    for (const int l : best.seq)
+      out.order.push_back(searched_[static_cast<std::size_t>(l)]);
     out.order.insert(out.order.end(), suffix_.begin(), suffix_.end());
     out.resolution = best.res;
     out.evaluations = evaluations_;
@@ -537,8 +553,10 @@ SearchResult search_priority(const MdNetwork& net, const SearchOptions& options)
   std::vector<int> searched, suffix;
   EdfResult edf = bottom_level_edf(net, options.edf);
   if (options.edf_reduction) {
-    searched.assign(edf.order.begin(), edf.order.begin() + static_cast<std::ptrdiff_t>(edf.urgent_group.size()));
-    suffix.assign(edf.order.begin() + static_cast<std::ptrdiff_t>(edf.urgent_group.size()), edf.order.end());
+    searched.assign(edf.order.begin(),
+                    edf.order.begin() + static_cast<std::ptrdiff_t>(edf.urgent_group.size()));
+    suffix.assign(edf.order.begin() + static_cast<std::ptrdiff_t>(edf.urgent_group.size()),
+                  edf.order.end());
   } else {
     searched = edf.order;
   }

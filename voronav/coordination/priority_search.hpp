@@ -63,13 +63,13 @@ enum class SearchKind { kNone, kExhaustive, kEdf, kGa };
 struct GaOptions {
   std::uint64_t seed = 1;
   int crossovers_per_generation = 10;
-  int crossovers_per_round = 20;     ///< convergence is checked after this many crossovers
-  double mutation_rate = 0.2;        ///< probability that a child is mutated
-  int mutation_min_edges = 4;        ///< mutation removes a random number of edges in
-  int mutation_max_edges = 7;        ///< [min, max] and reconnects greedily
-  double elitism = 0.2;              ///< fraction of the best orders always kept
-  double convergence = 1e-4;         ///< stop when the best makespan changes less (relative)
-  int max_rounds = 50;               ///< hard limit on rounds
+  int crossovers_per_round = 20;  ///< convergence is checked after this many crossovers
+  double mutation_rate = 0.2;     ///< probability that a child is mutated
+  int mutation_min_edges = 4;     ///< mutation removes a random number of edges in
+  int mutation_max_edges = 7;     ///< [min, max] and reconnects greedily
+  double elitism = 0.2;           ///< fraction of the best orders always kept
+  double convergence = 1e-4;      ///< stop when the best makespan changes less (relative)
+  int max_rounds = 50;            ///< hard limit on rounds
   /// Population size; 0 = the number of robots searched (the paper's "N random orders").
   int population = 0;
   /// 3-opt attempts per child; 0 = N (N - 1) as in the paper; < 0 disables 3-opt.
@@ -89,10 +89,10 @@ struct SearchOptions {
 struct SearchResult {
   std::vector<int> order;  ///< highest priority first
   Resolution resolution;
-  std::vector<int> urgent_group;  ///< the robots that were searched
-  std::size_t evaluations = 0;    ///< orders resolved
-  int rounds = 0;                 ///< GA rounds until convergence
-  int generations = 0;            ///< GA generations
+  std::vector<int> urgent_group;       ///< the robots that were searched
+  std::size_t evaluations = 0;         ///< orders resolved
+  int rounds = 0;                      ///< GA rounds until convergence
+  int generations = 0;                 ///< GA generations
   std::vector<double> best_per_round;  ///< GA best makespan after each round
 };
 

@@ -16,7 +16,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int line_of(const YAML::Node& n) { return n.Mark().line >= 0 ? n.Mark().line + 1 : 0; }
+int line_of(const YAML::Node& n) {
+  return n.Mark().line >= 0 ? n.Mark().line + 1 : 0;
+}
 
 double number(const YAML::Node& n, const std::string& src, const std::string& what) {
   if (!n || !n.IsScalar()) throw Error(src, line_of(n), what + ": expected a number");
@@ -30,7 +32,8 @@ double number(const YAML::Node& n, const std::string& src, const std::string& wh
 }
 
 Vec2 point(const YAML::Node& n, const std::string& src, const std::string& what) {
-  if (!n || !n.IsSequence() || n.size() != 2) throw Error(src, line_of(n), what + ": expected [x, y]");
+  if (!n || !n.IsSequence() || n.size() != 2)
+    throw Error(src, line_of(n), what + ": expected [x, y]");
   const Vec2 p{number(n[0], src, what), number(n[1], src, what)};
   if (!p.is_finite()) throw Error(src, line_of(n), what + ": expected finite coordinates");
   return p;
@@ -63,17 +66,20 @@ Scenario load_scenario(const fs::path& path) {
   if (root["coordinates"]) {
     const auto c = root["coordinates"].as<std::string>();
     if (c != "cells" && c != "world") {
-      throw Error(src, line_of(root["coordinates"]), "coordinates: expected cells|world, got '" + c + "'");
+      throw Error(src, line_of(root["coordinates"]),
+                  "coordinates: expected cells|world, got '" + c + "'");
     }
     s.cell_coordinates = c == "cells";
   }
   try {
-    if (root["at_start"]) s.map_options.at_start = parse_at_start(root["at_start"].as<std::string>());
+    if (root["at_start"])
+      s.map_options.at_start = parse_at_start(root["at_start"].as<std::string>());
     if (root["at_goal"]) s.map_options.at_goal = parse_at_goal(root["at_goal"].as<std::string>());
   } catch (const Error& e) {
     throw Error(src, 0, e.source() + ": " + e.reason());
   }
-  if (root["node_spacing"]) s.map_options.node_spacing = number(root["node_spacing"], src, "node_spacing");
+  if (root["node_spacing"])
+    s.map_options.node_spacing = number(root["node_spacing"], src, "node_spacing");
   const YAML::Node robots = root["robots"];
   if (!robots || !robots.IsSequence() || robots.size() == 0) {
     throw Error(src, line_of(root), "missing 'robots' (a non-empty list)");
@@ -88,7 +94,8 @@ Scenario load_scenario(const fs::path& path) {
     const std::string who = "robot " + std::to_string(spec.id);
     if (r["radius"]) spec.radius = number(r["radius"], src, who + " radius");
     if (r["v_max"]) spec.limits.v_max = number(r["v_max"], src, who + " v_max");
-    if (r["a_max"] && !r["a_max"].IsNull()) spec.limits.a_max = number(r["a_max"], src, who + " a_max");
+    if (r["a_max"] && !r["a_max"].IsNull())
+      spec.limits.a_max = number(r["a_max"], src, who + " a_max");
     if (!(spec.radius > 0.0) || !std::isfinite(spec.radius)) {
       throw Error(src, spec.line, who + ": radius must be a positive number");
     }
@@ -100,9 +107,11 @@ Scenario load_scenario(const fs::path& path) {
       if (!r["path"].IsSequence() || r["path"].size() == 0) {
         throw Error(src, spec.line, who + ": path: expected a list of [x, y]");
       }
-      for (const auto& p : r["path"]) spec.path.push_back(point(p, src, who + " path"));
+      for (const auto& p : r["path"])
+        spec.path.push_back(point(p, src, who + " path"));
     } else {
-      if (!r["start"] || !r["goal"]) throw Error(src, spec.line, who + ": needs start and goal, or a path");
+      if (!r["start"] || !r["goal"])
+        throw Error(src, spec.line, who + ": needs start and goal, or a path");
       if (!s.map) throw Error(src, spec.line, who + ": start/goal need a 'map' to plan on");
       spec.start = point(r["start"], src, who + " start");
       spec.goal = point(r["goal"], src, who + " goal");
@@ -114,7 +123,8 @@ Scenario load_scenario(const fs::path& path) {
 
 Scenario load_mapf(const fs::path& map_path, const fs::path& scen_path, int k, double radius) {
   if (k < 1) throw Error("--agents", 0, "expected at least 1 agent, got " + std::to_string(k));
-  if (!(radius > 0.0) || !std::isfinite(radius)) throw Error("--radius", 0, "expected a positive radius");
+  if (!(radius > 0.0) || !std::isfinite(radius))
+    throw Error("--radius", 0, "expected a positive radius");
   Scenario s;
   s.source = scen_path;
   s.map = io::load_map(map_path);
@@ -145,11 +155,13 @@ Cell to_cell(const Scenario& s, Vec2 p, const std::string& what) {
   const auto& g = s.map->grid.geometry();
   std::optional<Cell> c;
   if (s.cell_coordinates) {
-    if (p.x != std::floor(p.x) || p.y != std::floor(p.y) || std::abs(p.x) > 1e9 || std::abs(p.y) > 1e9) {
+    if (p.x != std::floor(p.x) || p.y != std::floor(p.y) || std::abs(p.x) > 1e9 ||
+        std::abs(p.y) > 1e9) {
       throw Error(s.source.string(), 0, what + ": expected integer cell coordinates");
     }
     const int x = static_cast<int>(p.x), y = static_cast<int>(p.y);
-    c = s.map->format == io::MapFormat::kMovingAi ? io::movingai_to_cell(x, y, g.height) : Cell{x, y};
+    c = s.map->format == io::MapFormat::kMovingAi ? io::movingai_to_cell(x, y, g.height)
+                                                  : Cell{x, y};
   } else {
     c = g.world_to_cell(p);
   }
@@ -180,7 +192,8 @@ PlannedAgents plan_agents(const Scenario& s) {
   if (s.map) blocked = binarize(s.map->grid);
   // Radii of all robots decide the node spacing h; the boxes see parked robots up to r_i + r_j + h.
   std::vector<Agent> probe;
-  for (const auto& r : s.robots) probe.push_back({r.id, TimedPath({{0, 0}}, {1.0, kInfinity}), r.radius});
+  for (const auto& r : s.robots)
+    probe.push_back({r.id, TimedPath({{0, 0}}, {1.0, kInfinity}), r.radius});
   const double h = effective_node_spacing(probe, s.map_options);
   struct Ends {
     Cell start, goal;

@@ -7,10 +7,9 @@
 // falls back to the plain map.
 //
 // Scenario YAML:
-//   map: arena.map              # relative to the scenario file; optional when every robot has a path
-//   coordinates: cells | world  # default: cells for Moving AI maps (x right, y down), else world [m]
-//   at_start: wait | appear     # default wait
-//   at_goal: stay | leave       # default stay
+//   map: arena.map              # relative to the scenario file; optional when every robot has a
+//   path coordinates: cells | world  # default: cells for Moving AI maps (x right, y down), else
+//   world [m] at_start: wait | appear     # default wait at_goal: stay | leave       # default stay
 //   node_spacing: 0             # [m], 0 = automatic
 //   robots:
 //     - {id: 1, start: [x, y], goal: [x, y], radius: 0.5, v_max: 1.0, a_max: 2.0}

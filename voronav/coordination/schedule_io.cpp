@@ -21,36 +21,43 @@ AtGoal parse_at_goal(const std::string& s) {
   if (s == "leave") return AtGoal::kLeave;
   throw Error("at_goal", 0, "expected stay|leave, got '" + s + "'");
 }
-const char* to_string(AtStart s) { return s == AtStart::kWait ? "wait" : "appear"; }
-const char* to_string(AtGoal g) { return g == AtGoal::kStay ? "stay" : "leave"; }
+const char* to_string(AtStart s) {
+  return s == AtStart::kWait ? "wait" : "appear";
+}
+const char* to_string(AtGoal g) {
+  return g == AtGoal::kStay ? "stay" : "leave";
+}
 
 namespace {
 
 nlohmann::json to_json(const Schedule& s) {
-  if (s.delays.size() != s.agents.size()) throw Error("schedule", 0, "one delay per agent expected");
+  if (s.delays.size() != s.agents.size())
+    throw Error("schedule", 0, "one delay per agent expected");
   nlohmann::json agents = nlohmann::json::array();
   double makespan = 0.0, sum = 0.0;
   for (std::size_t i = 0; i < s.agents.size(); ++i) {
     const Agent& a = s.agents[i];
     nlohmann::json path = nlohmann::json::array();
-    for (const Vec2 p : a.path.nodes()) path.push_back({p.x, p.y});
+    for (const Vec2 p : a.path.nodes())
+      path.push_back({p.x, p.y});
     const double arrival = s.delays[i] + a.path.travel_time();
     makespan = std::max(makespan, arrival);
     sum += arrival;
-    nlohmann::json j = {{"id", a.id},
-                        {"radius", a.radius},
-                        {"v_max", a.path.limits().v_max},
-                        {"delay", s.delays[i]},
-                        {"arrival", arrival},
-                        {"path", path}};
+    nlohmann::json j = {
+        {"id", a.id},           {"radius", a.radius}, {"v_max", a.path.limits().v_max},
+        {"delay", s.delays[i]}, {"arrival", arrival}, {"path", path}};
     j["a_max"] = std::isinf(a.path.limits().a_max) ? nlohmann::json(nullptr)
                                                    : nlohmann::json(a.path.limits().a_max);
     agents.push_back(j);
   }
-  return {{"format", "voronav-schedule"}, {"version", 1},
-          {"at_start", to_string(s.at_start)}, {"at_goal", to_string(s.at_goal)},
-          {"makespan", makespan}, {"sum_of_arrivals", sum},
-          {"valid", s.valid}, {"agents", agents}};
+  return {{"format", "voronav-schedule"},
+          {"version", 1},
+          {"at_start", to_string(s.at_start)},
+          {"at_goal", to_string(s.at_goal)},
+          {"makespan", makespan},
+          {"sum_of_arrivals", sum},
+          {"valid", s.valid},
+          {"agents", agents}};
 }
 
 void emit(YAML::Emitter& out, const nlohmann::json& j) {
@@ -64,7 +71,8 @@ void emit(YAML::Emitter& out, const nlohmann::json& j) {
   } else if (j.is_array()) {
     const bool flow = !j.empty() && !j.front().is_object() && !j.front().is_array();
     out << (flow ? YAML::Flow : YAML::Block) << YAML::BeginSeq;
-    for (const auto& e : j) emit(out, e);
+    for (const auto& e : j)
+      emit(out, e);
     out << YAML::EndSeq;
   } else if (j.is_null()) {
     out << YAML::Null;
@@ -81,7 +89,9 @@ void emit(YAML::Emitter& out, const nlohmann::json& j) {
 
 }  // namespace
 
-std::string schedule_to_json(const Schedule& s) { return to_json(s).dump(2) + "\n"; }
+std::string schedule_to_json(const Schedule& s) {
+  return to_json(s).dump(2) + "\n";
+}
 
 std::string schedule_to_yaml(const Schedule& s) {
   YAML::Emitter out;
@@ -127,7 +137,8 @@ Schedule parse_schedule(const std::string& text, const std::string& source) {
     }
     std::vector<Vec2> nodes;
     for (const auto& p : path) {
-      if (!p.IsSequence() || p.size() != 2) throw Error(source, line_of(p), who + ": path point: expected [x, y]");
+      if (!p.IsSequence() || p.size() != 2)
+        throw Error(source, line_of(p), who + ": path point: expected [x, y]");
       nodes.push_back({number(p[0], who + " path x"), number(p[1], who + " path y")});
     }
     MotionLimits lim;
@@ -135,8 +146,10 @@ Schedule parse_schedule(const std::string& text, const std::string& source) {
     if (a["a_max"] && !a["a_max"].IsNull()) lim.a_max = number(a["a_max"], who + " a_max");
     const double radius = number(a["radius"], who + " radius");
     const double delay = number(a["delay"], who + " delay");
-    if (!(radius > 0.0) || !std::isfinite(radius)) throw Error(source, line, who + ": radius must be > 0");
-    if (!(delay >= 0.0) || !std::isfinite(delay)) throw Error(source, line, who + ": delay must be >= 0");
+    if (!(radius > 0.0) || !std::isfinite(radius))
+      throw Error(source, line, who + ": radius must be > 0");
+    if (!(delay >= 0.0) || !std::isfinite(delay))
+      throw Error(source, line, who + ": delay must be >= 0");
     try {
       s.agents.push_back({id, TimedPath(std::move(nodes), lim), radius});
     } catch (const Error& e) {

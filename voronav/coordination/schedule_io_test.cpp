@@ -66,25 +66,30 @@ TEST(ScheduleIo, MalformedInputNamesTheProblem) {
   fails_with("[1, 2]", "agents");
   fails_with("{\"agents\": 3}", "agents");
   fails_with("{\"agents\": [{\"id\": 1, \"radius\": 0.5, \"v_max\": 1, \"delay\": 0}]}", "path");
-  fails_with("{\"agents\": [{\"id\": 1, \"radius\": 0.5, \"v_max\": 1, \"delay\": -2, "
-             "\"path\": [[0, 0]]}]}",
-             "delay");
-  fails_with("{\"agents\": [{\"id\": 1, \"radius\": 0.5, \"v_max\": \"x\", \"delay\": 0, "
-             "\"path\": [[0, 0]]}]}",
-             "v_max");
-  fails_with("{\"agents\": [{\"id\": 1, \"radius\": 0.5, \"v_max\": 0, \"delay\": 0, "
-             "\"path\": [[0, 0]]}]}",
-             "v_max");
-  fails_with("{\"agents\": [{\"id\": 1, \"radius\": 0.5, \"v_max\": 1, \"delay\": 0, "
-             "\"path\": [[0, 0, 3]]}]}",
-             "[x, y]");
+  fails_with(
+      "{\"agents\": [{\"id\": 1, \"radius\": 0.5, \"v_max\": 1, \"delay\": -2, "
+      "\"path\": [[0, 0]]}]}",
+      "delay");
+  fails_with(
+      "{\"agents\": [{\"id\": 1, \"radius\": 0.5, \"v_max\": \"x\", \"delay\": 0, "
+      "\"path\": [[0, 0]]}]}",
+      "v_max");
+  fails_with(
+      "{\"agents\": [{\"id\": 1, \"radius\": 0.5, \"v_max\": 0, \"delay\": 0, "
+      "\"path\": [[0, 0]]}]}",
+      "v_max");
+  fails_with(
+      "{\"agents\": [{\"id\": 1, \"radius\": 0.5, \"v_max\": 1, \"delay\": 0, "
+      "\"path\": [[0, 0, 3]]}]}",
+      "[x, y]");
   fails_with("{\"at_start\": \"sit\", \"agents\": []}", "at_start");
   fails_with("{agents: [", "not valid");
   EXPECT_THROW((void)read_schedule("/nonexistent/schedule.json"), Error);
 }
 
 TEST(Scenario, BundledScenarioPlansAndCoordinates) {
-  const Scenario sc = load_scenario(fs::path(VORONAV_SOURCE_DIR) / "data/coordination/arena_four.yaml");
+  const Scenario sc =
+      load_scenario(fs::path(VORONAV_SOURCE_DIR) / "data/coordination/arena_four.yaml");
   ASSERT_EQ(sc.robots.size(), 4u);
   EXPECT_TRUE(sc.cell_coordinates);
   EXPECT_DOUBLE_EQ(sc.robots[1].limits.v_max, 2.0);

@@ -17,11 +17,13 @@ TimedPath::TimedPath(std::vector<Vec2> nodes, MotionLimits limits)
     }
   }
   if (!(limits_.v_max > 0.0) || !std::isfinite(limits_.v_max)) {
-    throw Error("v_max", 0, "expected a positive finite speed, got " + std::to_string(limits_.v_max));
+    throw Error("v_max", 0,
+                "expected a positive finite speed, got " + std::to_string(limits_.v_max));
   }
   if (!(limits_.a_max > 0.0)) {
-    throw Error("a_max", 0,
-                "expected a positive acceleration (or infinity), got " + std::to_string(limits_.a_max));
+    throw Error(
+        "a_max", 0,
+        "expected a positive acceleration (or infinity), got " + std::to_string(limits_.a_max));
   }
   cumulative_.resize(nodes_.size(), 0.0);
   for (std::size_t i = 1; i < nodes_.size(); ++i) {
@@ -92,7 +94,8 @@ Vec2 TimedPath::point_at_arc(double s) const {
 
 std::vector<Vec2> resample(const TimedPath& path, double spacing, std::vector<double>* arcs) {
   if (!(spacing > 0.0) || !std::isfinite(spacing)) {
-    throw Error("node_spacing", 0, "expected a positive finite spacing, got " + std::to_string(spacing));
+    throw Error("node_spacing", 0,
+                "expected a positive finite spacing, got " + std::to_string(spacing));
   }
   const auto& nodes = path.nodes();
   const auto& cum = path.cumulative();

@@ -27,11 +27,12 @@ Verification verify_schedule(const std::vector<Agent>& agents, std::span<const d
   Verification out;
   const std::size_t n = agents.size();
   double horizon = 0.0;
-  for (std::size_t i = 0; i < n; ++i) horizon = std::max(horizon, delays[i] + agents[i].path.travel_time());
+  for (std::size_t i = 0; i < n; ++i)
+    horizon = std::max(horizon, delays[i] + agents[i].path.travel_time());
   auto window = [&](std::size_t i) {
     const double lo = options.at_start == AtStart::kWait ? 0.0 : delays[i];
-    const double hi = options.at_goal == AtGoal::kStay ? horizon
-                                                       : delays[i] + agents[i].path.travel_time();
+    const double hi =
+        options.at_goal == AtGoal::kStay ? horizon : delays[i] + agents[i].path.travel_time();
     return std::pair{lo, hi};
   };
   struct Interval {
@@ -46,7 +47,8 @@ Verification verify_schedule(const std::vector<Agent>& agents, std::span<const d
       const double hi = std::min(hi_i, hi_j);
       // Presence is half-open, [departure, arrival): a robot that appears at the instant another
       // leaves does not meet it.
-      const bool half_open = options.at_start == AtStart::kAppear || options.at_goal == AtGoal::kLeave;
+      const bool half_open =
+          options.at_start == AtStart::kAppear || options.at_goal == AtGoal::kLeave;
       if (lo > hi || (lo == hi && half_open)) continue;
       const Agent& A = agents[i];
       const Agent& B = agents[j];

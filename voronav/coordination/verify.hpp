@@ -18,8 +18,8 @@
 
 namespace voronav::coordination {
 
-/// With kAppear / kLeave a robot is in the world on [delay, delay + travel) (half-open), so one that
-/// appears at the instant another leaves does not meet it.
+/// With kAppear / kLeave a robot is in the world on [delay, delay + travel) (half-open), so one
+/// that appears at the instant another leaves does not meet it.
 struct VerifyOptions {
   AtStart at_start = AtStart::kWait;
   AtGoal at_goal = AtGoal::kStay;
@@ -37,8 +37,8 @@ struct Conflict {
 
 struct Verification {
   bool valid = true;
-  std::vector<Conflict> conflicts;  ///< at most one per pair, sorted by time
-  int undecided_pairs = 0;          ///< pairs that hit the work limit (valid is then false)
+  std::vector<Conflict> conflicts;   ///< at most one per pair, sorted by time
+  int undecided_pairs = 0;           ///< pairs that hit the work limit (valid is then false)
   double min_clearance = kInfinity;  ///< smallest sampled d - (r_a + r_b) [m]
 };
 
