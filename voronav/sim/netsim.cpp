@@ -102,6 +102,7 @@ struct Robot {
   std::vector<std::size_t> s_sent;     // sent point index -> s_comb index
   enum class Walk { kIdle, kBridge, kDestination } walk = Walk::kIdle;
   double walk_since_check = 0.0;
+  double bridge_at = -1.0;  // when to start bridging if no continuable Search came
   std::vector<PathMessage> got_paths;
   double path_deadline = -1.0;
   bool path_forwarded = false;
@@ -314,8 +315,10 @@ class Runner {
       ++i;
     }
     if (o_.method == Method::kDecentralized) {
-      for (auto& r : robots_)
+      for (auto& r : robots_) {
         if (r.path_deadline >= 0.0 && now_ + 1e-9 >= r.path_deadline) select_path(r);
+        if (r.bridge_at >= 0.0 && now_ + 1e-9 >= r.bridge_at) start_bridge(r);
+      }
       auto& s = src();
       if (route_.empty() && now_ - search_started_ >= o_.search_timeout_s &&
           res_.metrics.search_attempts < o_.max_search_attempts)
@@ -442,6 +445,23 @@ class Runner {
     return blocked;
   }
 
+  /// Whether every cell within r of the straight move a->b is known free in `map`.
+  bool segment_known_free(const LocalMap& map, Vec2 a, Vec2 b) {
+    const auto& g = map.world();
+    const auto ca = g.world_to_cell(a), cb = g.world_to_cell(b);
+    if (!ca || !cb) return false;
+    const double rad = o_.robot_radius_m / g.resolution - 0.01;
+    bool ok = true;
+    for_each_line_cell(*ca, *cb, [&](Cell c) {
+      for_each_disc_cell(c, rad, [&](Cell d) {
+        if (map.at(d) != kFree) ok = false;
+        return ok;
+      });
+      return ok;
+    });
+    return ok;
+  }
+
   // ---- walking on a robot's own (optimistic) map ---------------------------------------------
   bool plan_walk(Robot& r, Vec2 target) {
     const auto& wg = sc_.world.geometry();
@@ -520,6 +540,19 @@ class Runner {
     for (std::size_t i = 0; i < r.s_na; ++i) start[i] = r.s_comb[i].cost;
     r.s_search = timed(r, [&] { return search_points(r.s_comb, start, o_.robot_radius_m); });
     r.m.work += r.s_search.work;
+    if (has_dest && !std::isfinite(r.s_search.cost.back())) {
+      // The destination is not an open point: join it to the best reached own point it can be
+      // driven to in a straight line through known free space.
+      const std::size_t d = r.s_comb.size() - 1;
+      for (std::size_t i = r.s_na; i < d; ++i) {
+        if (!std::isfinite(r.s_search.cost[i])) continue;
+        const double c = r.s_search.cost[i] + distance(r.s_comb[i].position, sc_.destination);
+        if (c < r.s_search.cost[d] && segment_known_free(r.map, r.s_comb[i].position, sc_.destination)) {
+          r.s_search.cost[d] = c;
+          r.s_search.parent[d] = static_cast<std::int32_t>(i);
+        }
+      }
+    }
     r.s_sent.clear();
     for (std::size_t i = r.s_na; i < r.s_na + own.size(); ++i)
       if (std::isfinite(r.s_search.cost[i])) r.s_sent.push_back(i);
@@ -533,7 +566,26 @@ class Runner {
 
   void on(Robot& r, const Header& h, const SearchMessage& m) {
     if (is_source(r) || m.source.value != sc_.source) return;
-    if (r.s_num != kNone && m.num <= r.s_num) return;  // duplicate or stale search
+    if (r.s_num != kNone && m.num < r.s_num) return;  // stale search
+    if (r.s_num == m.num) {
+      // Same search from another robot: only useful while this robot has not continued yet.
+      if (r.s_done || r.walk == Robot::Walk::kDestination) return;
+      const SearchMessage keep = r.s_in;
+      const RobotId keep_sender = r.s_sender;
+      r.s_in = m;
+      r.s_sender = h.sender;
+      if (try_continue(r)) {
+        NS_DEBUG("t=%.1f robot %u continues search %u from %u\n", now_, r.id.value, m.num, h.sender.value);
+        r.walk = Robot::Walk::kIdle;
+        r.waypoints.clear();
+        r.bridge_at = -1.0;
+        after_continue(r, h.hops);
+      } else if (r.walk == Robot::Walk::kBridge) {
+        r.s_in = keep;  // keep bridging toward the first sender
+        r.s_sender = keep_sender;
+      }
+      return;
+    }
     process_search(r, h.sender, m, h.hops);
   }
 
@@ -543,6 +595,7 @@ class Runner {
     r.s_in = m;
     r.s_sender = sender;
     r.walk = Robot::Walk::kIdle;
+    r.bridge_at = -1.0;
     r.got_paths.clear();
     r.path_deadline = -1.0;
     r.path_forwarded = false;
@@ -565,9 +618,28 @@ class Runner {
         near = p.position;
       }
     }
-    if (distance(r.pos, sc_.destination) < d_sender - 1.0 && plan_walk(r, near)) {
+    (void)near;
+    if (distance(r.pos, sc_.destination) < d_sender - 1.0) {
+      // Wait a little for a Search this robot can continue; bridge the gap only if none comes.
+      r.bridge_at = now_ + o_.bridge_wait_s;
+      return;
+    }
+    r.s_done = true;
+  }
+
+  void start_bridge(Robot& r) {
+    r.bridge_at = -1.0;
+    if (r.s_done || r.walk != Robot::Walk::kIdle) return;
+    double d_near = kInf;
+    Vec2 near{};
+    for (const auto& p : r.s_in.open_points)
+      if (distance(p.position, r.pos) < d_near) {
+        d_near = distance(p.position, r.pos);
+        near = p.position;
+      }
+    if (std::isfinite(d_near) && plan_walk(r, near)) {
+      NS_DEBUG("t=%.1f robot %u bridges to (%.1f,%.1f)\n", now_, r.id.value, near.x, near.y);
       r.walk = Robot::Walk::kBridge;
-      NS_DEBUG("  robot %u bridges to (%.1f,%.1f)\n", r.id.value, near.x, near.y);
       r.walk_since_check = 0.0;
       return;
     }
@@ -582,13 +654,13 @@ class Runner {
       answer_path(r);
       return;
     }
-    // Walk toward the destination and sense it on the source's behalf (figure 18) when it is
-    // within radio range or no neighbour is closer to it (this robot is the frontier).
+    // Walk toward the destination and sense it on the source's behalf (figure 18) when no radio
+    // neighbour is closer to it (this robot is the frontier); otherwise forward the Search.
     bool frontier = true;
     const double my_d = distance(r.pos, sc_.destination);
     for (RobotId n : radio_.neighbours(r.id))
       if (distance(robots_[n.value].pos, sc_.destination) < my_d) frontier = false;
-    if (my_d <= o_.radio.range_m || frontier) {
+    if (frontier) {
       if (r.walk == Robot::Walk::kDestination) return;  // keep walking
       if (plan_walk(r, sc_.destination)) {
         NS_DEBUG("  robot %u walks to destination\n", r.id.value);
@@ -624,6 +696,7 @@ class Runner {
       r.s_in.open_points[0] = VoronoiPoint{r.pos, static_cast<float>(std::max(cl, o_.robot_radius_m + 0.05)), 0.0f};
     }
     const bool cont = try_continue(r);
+    NS_DEBUG("t=%.1f robot %u walk check cont=%d dest=%d arrived=%d dcl=%.2f\n", now_, r.id.value, cont ? 1 : 0, dest_reached(r) ? 1 : 0, arrived ? 1 : 0, clearance_at(r.map.grid(), sc_.destination));
     if (r.walk == Robot::Walk::kBridge) {
       if (cont) {
         r.walk = Robot::Walk::kIdle;
@@ -687,6 +760,7 @@ class Runner {
       on_repair_path(r, m);
       return;
     }
+    NS_DEBUG("t=%.1f robot %u got path num %u exit %u (s_num %u fwd %d sent %zu)\n", now_, r.id.value, m.num, m.exit_index, r.s_num, r.path_forwarded ? 1 : 0, r.s_sent.size());
     if (m.num != r.s_num || r.path_forwarded || m.exit_index >= r.s_sent.size()) return;
     r.got_paths.push_back(m);
     if (r.path_deadline < 0.0) r.path_deadline = now_ + o_.path_wait_s;

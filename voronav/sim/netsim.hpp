@@ -63,6 +63,9 @@ struct NetSimOptions {
   network::RadioOptions radio{};
   network::VoronoiPointsOptions points{};
   double path_wait_s = 0.5;      ///< Table 3 "wait for a little while" [s]
+  /// A robot that cannot continue a Search waits this long for one it can continue before it
+  /// walks over to sense the gap itself [s].
+  double bridge_wait_s = 2.0;
   double search_timeout_s = 60.0;  ///< source retries the Search with Num+1 after this [s]
   int max_search_attempts = 12;
   double link_timeout_s = 0.3;   ///< hop-by-hop retry after no LinkAck [s]

@@ -56,7 +56,9 @@ NetSimScenario place_robots(const OfficeWorld& world, const PlacementOptions& o)
   Cell s = pick(free_cells);
   Cell dest = s;
   double best = -1.0;
-  for (int k = 0; k < 48; ++k) {
+  const double min_d = 0.3 * std::min(g.width, g.height);
+  for (int k = 0; k < 400 && (k < 48 || best < min_d); ++k) {
+    if (k % 48 == 47 && best < min_d) s = pick(free_cells);  // enclosed source: pick another
     const Cell c = pick(free_cells);
     const double d = std::hypot(c.x - s.x, c.y - s.y);
     if (d > best && truth_plan(pg, s, c).ok()) {
