@@ -13,13 +13,20 @@ namespace voronav::network {
 
 std::string_view to_string(MessageType t) {
   switch (t) {
-    case MessageType::kSearch: return "search";
-    case MessageType::kPath: return "path";
-    case MessageType::kRepair: return "repair";
-    case MessageType::kRequest: return "request";
-    case MessageType::kAck: return "ack";
-    case MessageType::kNotify: return "notify";
-    case MessageType::kLinkAck: return "link_ack";
+    case MessageType::kSearch:
+      return "search";
+    case MessageType::kPath:
+      return "path";
+    case MessageType::kRepair:
+      return "repair";
+    case MessageType::kRequest:
+      return "request";
+    case MessageType::kAck:
+      return "ack";
+    case MessageType::kNotify:
+      return "notify";
+    case MessageType::kLinkAck:
+      return "link_ack";
   }
   return "unknown";
 }
@@ -32,13 +39,16 @@ class Writer {
  public:
   void u8(std::uint8_t v) { out_.push_back(v); }
   void u16(std::uint16_t v) {
-    for (int i = 0; i < 2; ++i) out_.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    for (int i = 0; i < 2; ++i)
+      out_.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
   }
   void u32(std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) out_.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    for (int i = 0; i < 4; ++i)
+      out_.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
   }
   void u64(std::uint64_t v) {
-    for (int i = 0; i < 8; ++i) out_.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    for (int i = 0; i < 8; ++i)
+      out_.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
   }
   void f32(float v) {
     if (!std::isfinite(v)) throw Error("message", 0, "cannot encode a non-finite number");
@@ -54,12 +64,14 @@ class Writer {
   }
   void id(RobotId r) { u32(r.value); }
   void count(std::size_t n) {
-    if (n > kMaxCount) throw Error("message", 0, "too many elements to encode: " + std::to_string(n));
+    if (n > kMaxCount)
+      throw Error("message", 0, "too many elements to encode: " + std::to_string(n));
     u32(static_cast<std::uint32_t>(n));
   }
   void ids(const std::vector<RobotId>& v) {
     count(v.size());
-    for (RobotId r : v) id(r);
+    for (RobotId r : v)
+      id(r);
   }
   void points(const std::vector<VoronoiPoint>& v) {
     count(v.size());
@@ -92,13 +104,15 @@ class Reader {
   std::uint32_t u32(const char* what) {
     need(4, what);
     std::uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(b_[pos_++]) << (8 * i);
+    for (int i = 0; i < 4; ++i)
+      v |= static_cast<std::uint32_t>(b_[pos_++]) << (8 * i);
     return v;
   }
   std::uint64_t u64(const char* what) {
     need(8, what);
     std::uint64_t v = 0;
-    for (int i = 0; i < 8; ++i) v |= static_cast<std::uint64_t>(b_[pos_++]) << (8 * i);
+    for (int i = 0; i < 8; ++i)
+      v |= static_cast<std::uint64_t>(b_[pos_++]) << (8 * i);
     return v;
   }
   float f32(const char* what) {
@@ -125,7 +139,8 @@ class Reader {
   }
   std::vector<RobotId> ids(const char* what) {
     std::vector<RobotId> v(count(4, what));
-    for (auto& r : v) r = id(what);
+    for (auto& r : v)
+      r = id(what);
     return v;
   }
   std::vector<VoronoiPoint> points(const char* what) {
@@ -151,7 +166,9 @@ std::uint8_t cell_code(std::int8_t v) {
   if (v < 0) return 2;  // unknown
   return v >= 50 ? 1 : 0;
 }
-std::int8_t code_value(std::uint8_t c) { return c == 0 ? kFree : c == 1 ? kOccupied : kUnknown; }
+std::int8_t code_value(std::uint8_t c) {
+  return c == 0 ? kFree : c == 1 ? kOccupied : kUnknown;
+}
 
 void encode_payload(Writer& w, const SearchMessage& m) {
   w.id(m.source);
@@ -160,7 +177,8 @@ void encode_payload(Writer& w, const SearchMessage& m) {
   w.ids(m.relays);
   w.points(m.open_points);
   w.count(m.close_points.size());
-  for (Vec2 p : m.close_points) w.vec(p);
+  for (Vec2 p : m.close_points)
+    w.vec(p);
 }
 void encode_payload(Writer& w, const PathMessage& m) {
   w.id(m.source);
@@ -224,7 +242,8 @@ Payload decode_payload(MessageType t, Reader& r) {
       m.relays = r.ids("relays");
       m.open_points = r.points("open points");
       m.close_points.resize(r.count(8, "close points"));
-      for (auto& p : m.close_points) p = r.vec("close point");
+      for (auto& p : m.close_points)
+        p = r.vec("close point");
       return m;
     }
     case MessageType::kPath: {
@@ -244,7 +263,8 @@ Payload decode_payload(MessageType t, Reader& r) {
       m.whole_path = r.points("whole path");
       m.broken_from = r.u32("broken_from");
       m.broken_to = r.u32("broken_to");
-      if (m.broken_from > m.broken_to || m.broken_to >= std::max<std::size_t>(m.whole_path.size(), 1))
+      if (m.broken_from > m.broken_to ||
+          m.broken_to >= std::max<std::size_t>(m.whole_path.size(), 1))
         r.fail("broken range outside the whole path");
       return m;
     }
@@ -313,13 +333,15 @@ std::uint32_t crc32(std::span<const std::uint8_t> bytes) {
     std::array<std::uint32_t, 256> t{};
     for (std::uint32_t i = 0; i < 256; ++i) {
       std::uint32_t c = i;
-      for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+      for (int k = 0; k < 8; ++k)
+        c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
       t[i] = c;
     }
     return t;
   }();
   std::uint32_t c = 0xFFFFFFFFu;
-  for (std::uint8_t b : bytes) c = table[(c ^ b) & 0xFFu] ^ (c >> 8);
+  for (std::uint8_t b : bytes)
+    c = table[(c ^ b) & 0xFFu] ^ (c >> 8);
   return c ^ 0xFFFFFFFFu;
 }
 
@@ -339,7 +361,8 @@ std::vector<std::uint8_t> encode(const Envelope& message) {
   std::visit([&](const auto& m) { encode_payload(w, m); }, message.payload);
   auto& out = w.bytes();
   const auto len = static_cast<std::uint32_t>(out.size() - len_pos - 4);
-  for (int i = 0; i < 4; ++i) out[len_pos + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(len >> (8 * i));
+  for (int i = 0; i < 4; ++i)
+    out[len_pos + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(len >> (8 * i));
   const std::uint32_t crc = crc32(out);
   w.u32(crc);
   return std::move(out);
@@ -361,7 +384,8 @@ Envelope decode(std::span<const std::uint8_t> bytes) {
     r.fail("unsupported version " + std::to_string(version) + " (expected " +
            std::to_string(kWireVersion) + ")");
   const std::uint8_t type = r.u8("type");
-  if (type == 0 || type >= kMessageTypeCount) r.fail("unknown message type " + std::to_string(type));
+  if (type == 0 || type >= kMessageTypeCount)
+    r.fail("unknown message type " + std::to_string(type));
   Envelope e;
   e.header.sender = r.id("sender");
   e.header.receiver = r.id("receiver");
@@ -382,7 +406,9 @@ Envelope decode(std::span<const std::uint8_t> bytes) {
   return e;
 }
 
-std::size_t grid_payload_bytes(const OccupancyGrid& map) { return 8 + 32 + (map.size() + 3) / 4; }
+std::size_t grid_payload_bytes(const OccupancyGrid& map) {
+  return 8 + 32 + (map.size() + 3) / 4;
+}
 
 std::size_t points_payload_bytes(std::size_t open, std::size_t close) {
   return 8 + open * 16 + 4 + close * 8;

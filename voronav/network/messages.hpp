@@ -113,14 +113,14 @@ struct LinkAckMessage {
   friend bool operator==(const LinkAckMessage&, const LinkAckMessage&) = default;
 };
 
-using Payload = std::variant<SearchMessage, PathMessage, RepairMessage, RequestMessage,
-                             AckMessage, NotifyMessage, LinkAckMessage>;
+using Payload = std::variant<SearchMessage, PathMessage, RepairMessage, RequestMessage, AckMessage,
+                             NotifyMessage, LinkAckMessage>;
 
 /// The routing header every message carries.
 struct Header {
-  RobotId sender;    ///< this hop's transmitter
-  RobotId receiver;  ///< this hop's receiver or kBroadcast
-  RobotId origin;    ///< who created the message (end to end)
+  RobotId sender;            ///< this hop's transmitter
+  RobotId receiver;          ///< this hop's receiver or kBroadcast
+  RobotId origin;            ///< who created the message (end to end)
   std::uint32_t msg_id = 0;  ///< unique per origin: duplicate suppression and LinkAck
   std::uint8_t hops = 0;     ///< hops travelled so far (the flood bound)
   friend bool operator==(const Header&, const Header&) = default;

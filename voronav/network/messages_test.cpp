@@ -22,17 +22,21 @@ Envelope search_envelope() {
 
 std::vector<Envelope> all_kinds() {
   std::vector<Envelope> v{search_envelope()};
-  PathMessage p{RobotId{1}, 2, {RobotId{1}, RobotId{4}}, {{{1, 1}, 1.0f, 0.0f}, {{2, 2}, 0.5f, 1.5f}}, 1};
+  PathMessage p{
+      RobotId{1}, 2, {RobotId{1}, RobotId{4}}, {{{1, 1}, 1.0f, 0.0f}, {{2, 2}, 0.5f, 1.5f}}, 1};
   v.push_back({Header{RobotId{4}, RobotId{1}, RobotId{6}, 5, 1}, p});
-  RepairMessage r{RobotId{1}, 3, {RobotId{2}}, {{{0, 0}, 1, 0}, {{1, 0}, 1, 1}, {{2, 0}, 1, 2}}, 0, 2};
+  RepairMessage r{RobotId{1}, 3, {RobotId{2}}, {{{0, 0}, 1, 0}, {{1, 0}, 1, 1}, {{2, 0}, 1, 2}},
+                  0,          2};
   v.push_back({Header{RobotId{2}, kBroadcast, RobotId{2}, 9, 0}, r});
   v.push_back({Header{RobotId{0}, kBroadcast, RobotId{0}, 1, 0}, RequestMessage{RobotId{0}, 1}});
   OccupancyGrid g(GridGeometry{5, 3, 0.2, {{1.0, 2.0}, 0.0}}, kUnknown);
   g[Cell{0, 0}] = kFree;
   g[Cell{4, 2}] = kOccupied;
   g[Cell{2, 1}] = kFree;
-  v.push_back({Header{RobotId{5}, RobotId{0}, RobotId{5}, 77, 3}, AckMessage{RobotId{0}, 1, RobotId{5}, g}});
-  v.push_back({Header{RobotId{5}, RobotId{0}, RobotId{5}, 78, 0}, NotifyMessage{RobotId{0}, RobotId{5}, {3, 4}}});
+  v.push_back({Header{RobotId{5}, RobotId{0}, RobotId{5}, 77, 3},
+               AckMessage{RobotId{0}, 1, RobotId{5}, g}});
+  v.push_back({Header{RobotId{5}, RobotId{0}, RobotId{5}, 78, 0},
+               NotifyMessage{RobotId{0}, RobotId{5}, {3, 4}}});
   v.push_back({Header{RobotId{0}, RobotId{5}, RobotId{0}, 79, 0}, LinkAckMessage{RobotId{5}, 77}});
   return v;
 }
@@ -87,7 +91,8 @@ TEST(Messages, RandomGarbageNeverCrashesAndIsRejected) {
   std::mt19937 rng(11);
   for (int t = 0; t < 2000; ++t) {
     std::vector<std::uint8_t> junk(rng() % 200);
-    for (auto& b : junk) b = static_cast<std::uint8_t>(rng());
+    for (auto& b : junk)
+      b = static_cast<std::uint8_t>(rng());
     if (t % 2 == 0 && junk.size() > 4) {
       junk[0] = 'V';
       junk[1] = 'N';
@@ -123,7 +128,9 @@ TEST(Messages, LyingCountWithValidCrcIsRejected) {
   const std::size_t relay_count_at = 2 + 1 + 1 + 4 * 4 + 1 + 4 + 8 + 8;
   bytes[relay_count_at] = 200;
   const auto crc = crc32(std::span(bytes).first(bytes.size() - 4));
-  for (int i = 0; i < 4; ++i) bytes[bytes.size() - 4 + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(crc >> (8 * i));
+  for (int i = 0; i < 4; ++i)
+    bytes[bytes.size() - 4 + static_cast<std::size_t>(i)] =
+        static_cast<std::uint8_t>(crc >> (8 * i));
   EXPECT_THROW((void)decode(bytes), Error);
 }
 
@@ -135,7 +142,8 @@ TEST(Messages, NonFiniteValuesAreNotEncoded) {
 
 TEST(Messages, Crc32MatchesTheStandardCheckValue) {
   const std::string s = "123456789";
-  EXPECT_EQ(crc32(std::span(reinterpret_cast<const std::uint8_t*>(s.data()), s.size())), 0xCBF43926u);
+  EXPECT_EQ(crc32(std::span(reinterpret_cast<const std::uint8_t*>(s.data()), s.size())),
+            0xCBF43926u);
 }
 
 }  // namespace

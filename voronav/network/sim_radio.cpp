@@ -34,7 +34,8 @@ SimRadio::SimRadio(RadioOptions options) : options_(options), rng_(options.seed)
 
 void SimRadio::ensure(RobotId id) {
   if (id == kBroadcast) throw Error("radio", 0, "kBroadcast is not a robot id");
-  if (id.value >= 1'000'000) throw Error("radio", 0, "robot id too large: " + std::to_string(id.value));
+  if (id.value >= 1'000'000)
+    throw Error("radio", 0, "robot id too large: " + std::to_string(id.value));
   const std::size_t n = static_cast<std::size_t>(id.value) + 1;
   if (positions_.size() < n) {
     positions_.resize(n);
@@ -131,19 +132,22 @@ std::vector<Packet> SimRadio::receive(RobotId self) {
   auto& box = inbox_[self.value];
   if (box.empty()) return out;
   std::vector<Pending> due, later;
-  for (auto& p : box) (p.deliver_at <= now_ + 1e-12 ? due : later).push_back(std::move(p));
+  for (auto& p : box)
+    (p.deliver_at <= now_ + 1e-12 ? due : later).push_back(std::move(p));
   box = std::move(later);
   std::sort(due.begin(), due.end(), [](const Pending& a, const Pending& b) {
     return a.deliver_at != b.deliver_at ? a.deliver_at < b.deliver_at : a.order < b.order;
   });
   out.reserve(due.size());
-  for (auto& p : due) out.push_back(std::move(p.packet));
+  for (auto& p : due)
+    out.push_back(std::move(p.packet));
   return out;
 }
 
 std::size_t SimRadio::in_flight() const {
   std::size_t n = 0;
-  for (const auto& b : inbox_) n += b.size();
+  for (const auto& b : inbox_)
+    n += b.size();
   return n;
 }
 

@@ -36,7 +36,7 @@ struct TrafficCounter {
 };
 
 struct RadioStats {
-  TrafficCounter total;  ///< transmissions on the air
+  TrafficCounter total;                                     ///< transmissions on the air
   std::array<TrafficCounter, kMessageTypeCount> by_type{};  ///< index = MessageType value
   std::vector<TrafficCounter> sent_by_robot;                ///< index = RobotId value
   std::vector<TrafficCounter> received_by_robot;

@@ -8,7 +8,8 @@ namespace voronav::network {
 namespace {
 
 std::vector<std::uint8_t> request_bytes(std::uint32_t id) {
-  return encode({Header{RobotId{0}, kBroadcast, RobotId{0}, id, 0}, RequestMessage{RobotId{0}, id}});
+  return encode(
+      {Header{RobotId{0}, kBroadcast, RobotId{0}, id, 0}, RequestMessage{RobotId{0}, id}});
 }
 
 TEST(SimRadio, BroadcastReachesOnlyRobotsInRange) {
@@ -57,7 +58,8 @@ TEST(SimRadio, LossRateIsHonoured) {
   radio.update_position(RobotId{0}, {0, 0});
   radio.update_position(RobotId{1}, {1, 0});
   const int n = 20000;
-  for (int i = 0; i < n; ++i) radio.send(RobotId{0}, RobotId{1}, request_bytes(static_cast<std::uint32_t>(i)));
+  for (int i = 0; i < n; ++i)
+    radio.send(RobotId{0}, RobotId{1}, request_bytes(static_cast<std::uint32_t>(i)));
   radio.set_time(1.0);
   const double got = static_cast<double>(radio.receive(RobotId{1}).size()) / n;
   EXPECT_NEAR(got, 0.8, 0.015);
@@ -69,10 +71,12 @@ TEST(SimRadio, DuplicationAndReorderingHappenDeterministically) {
     SimRadio radio(RadioOptions{.duplicate = 0.3, .reorder = 0.3, .seed = 9});
     radio.update_position(RobotId{0}, {0, 0});
     radio.update_position(RobotId{1}, {1, 0});
-    for (std::uint32_t i = 0; i < 200; ++i) radio.send(RobotId{0}, RobotId{1}, request_bytes(i));
+    for (std::uint32_t i = 0; i < 200; ++i)
+      radio.send(RobotId{0}, RobotId{1}, request_bytes(i));
     radio.set_time(10.0);
     std::vector<std::uint32_t> ids;
-    for (const auto& p : radio.receive(RobotId{1})) ids.push_back(decode(p.bytes).header.msg_id);
+    for (const auto& p : radio.receive(RobotId{1}))
+      ids.push_back(decode(p.bytes).header.msg_id);
     return ids;
   };
   const auto a = run();

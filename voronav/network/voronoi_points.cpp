@@ -15,7 +15,8 @@ namespace {
 
 BinaryGrid known_free_blocked(const OccupancyGrid& m) {
   BinaryGrid b(m.geometry(), 1);
-  for (std::size_t i = 0; i < m.size(); ++i) b[i] = (m[i] == kFree) ? 0 : 1;
+  for (std::size_t i = 0; i < m.size(); ++i)
+    b[i] = (m[i] == kFree) ? 0 : 1;
   return b;
 }
 
@@ -25,7 +26,8 @@ VoronoiPoints make_voronoi_points(const OccupancyGrid& local_map,
                                   const VoronoiPointsOptions& options) {
   if (!(options.robot_radius_m >= 0.0) || !std::isfinite(options.robot_radius_m))
     throw Error("voronoi_points.robot_radius_m", 0, "expected a finite number >= 0");
-  if (!(options.min_site_separation_cells >= 1.0) || !std::isfinite(options.min_site_separation_cells))
+  if (!(options.min_site_separation_cells >= 1.0) ||
+      !std::isfinite(options.min_site_separation_cells))
     throw Error("voronoi_points.min_site_separation_cells", 0, "expected a finite number >= 1");
   if (!(options.close_point_spacing_m > 0.0) || !std::isfinite(options.close_point_spacing_m))
     throw Error("voronoi_points.close_point_spacing_m", 0, "expected a finite number > 0");
@@ -34,8 +36,8 @@ VoronoiPoints make_voronoi_points(const OccupancyGrid& local_map,
   const auto& g = local_map.geometry();
   const double res = g.resolution;
   const BinaryGrid blocked = known_free_blocked(local_map);
-  const field::DistanceField df =
-      field::distance_transform(blocked, field::DistanceTransformOptions{.border_is_blocked = true});
+  const field::DistanceField df = field::distance_transform(
+      blocked, field::DistanceTransformOptions{.border_is_blocked = true});
   out.cells_processed = local_map.size() * 2;
   const double sep2 = options.min_site_separation_cells * options.min_site_separation_cells;
   auto site_cell = [&](std::int32_t s) { return g.cell_at(static_cast<std::size_t>(s)); };
@@ -186,7 +188,8 @@ PointSearch search_points(std::span<const VoronoiPoint> points, std::span<const 
 
 std::vector<std::size_t> trace_points(const PointSearch& s, std::size_t last) {
   std::vector<std::size_t> chain;
-  for (std::int32_t i = static_cast<std::int32_t>(last); i >= 0; i = s.parent[static_cast<std::size_t>(i)]) {
+  for (std::int32_t i = static_cast<std::int32_t>(last); i >= 0;
+       i = s.parent[static_cast<std::size_t>(i)]) {
     chain.push_back(static_cast<std::size_t>(i));
     if (chain.size() > s.parent.size()) break;  // defensive: parents form a tree
   }
@@ -196,7 +199,8 @@ std::vector<std::size_t> trace_points(const PointSearch& s, std::size_t last) {
 
 double route_length(std::span<const VoronoiPoint> route) {
   double len = 0.0;
-  for (std::size_t i = 1; i < route.size(); ++i) len += distance(route[i - 1].position, route[i].position);
+  for (std::size_t i = 1; i < route.size(); ++i)
+    len += distance(route[i - 1].position, route[i].position);
   return len;
 }
 

@@ -52,9 +52,9 @@ struct VoronoiPoints {
 
 /// Result of a shortest-path search over points.
 struct PointSearch {
-  std::vector<double> cost;        ///< per point, +inf when unreached
+  std::vector<double> cost;          ///< per point, +inf when unreached
   std::vector<std::int32_t> parent;  ///< previous point, or -1 for a start
-  std::size_t work = 0;            ///< pairs examined
+  std::size_t work = 0;              ///< pairs examined
 };
 
 /// Multi-source Dijkstra over `points` with edges between points that continue each other,

@@ -37,7 +37,8 @@ TEST(VoronoiPoints, CorridorPointsChainAlongTheCorridor) {
   for (int x = 1; x < 53; ++x) {
     m[Cell{x, 2}] = kOccupied;
     m[Cell{x, 9}] = kOccupied;
-    for (int y = 3; y < 9; ++y) m[Cell{x, y}] = kFree;
+    for (int y = 3; y < 9; ++y)
+      m[Cell{x, y}] = kFree;
   }
   const double r = 0.2;
   const auto vp = make_voronoi_points(m, {.robot_radius_m = r});
@@ -79,7 +80,8 @@ TEST(VoronoiPoints, ContinuityRuleIsTheDiscOverlap) {
 }
 
 TEST(VoronoiPoints, SearchFindsShortestChain) {
-  std::vector<VoronoiPoint> pts{{{0, 0}, 1, 0}, {{1.5, 0}, 1, 0}, {{3, 0}, 1, 0}, {{1.5, 1.2}, 1, 0}};
+  std::vector<VoronoiPoint> pts{
+      {{0, 0}, 1, 0}, {{1.5, 0}, 1, 0}, {{3, 0}, 1, 0}, {{1.5, 1.2}, 1, 0}};
   std::vector<double> start{0, INFINITY, INFINITY, INFINITY};
   const auto s = search_points(pts, start, 0.2);
   EXPECT_NEAR(s.cost[2], 3.0, 1e-9);

@@ -13,8 +13,8 @@
 
 #include <cstdio>
 #include <cstdlib>
-#define NS_DEBUG(...) \
-  do { \
+#define NS_DEBUG(...)                                                   \
+  do {                                                                  \
     if (std::getenv("NETSIM_DEBUG")) std::fprintf(stderr, __VA_ARGS__); \
   } while (0)
 
@@ -29,7 +29,8 @@ std::string_view to_string(Method m) {
 Method parse_method(std::string_view s) {
   if (s == "centralized") return Method::kCentralized;
   if (s == "decentralized") return Method::kDecentralized;
-  throw Error("method", 0, "expected 'centralized' or 'decentralized', got '" + std::string(s) + "'");
+  throw Error("method", 0,
+              "expected 'centralized' or 'decentralized', got '" + std::string(s) + "'");
 }
 
 void NetSimScenario::validate() const {
@@ -42,7 +43,8 @@ void NetSimScenario::validate() const {
       throw Error(what, 0, "position is outside the map");
     if (world[*c] != kFree) throw Error(what, 0, "position is inside an obstacle");
   };
-  for (std::size_t i = 0; i < robots.size(); ++i) check(robots[i], "scenario.robots[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < robots.size(); ++i)
+    check(robots[i], "scenario.robots[" + std::to_string(i) + "]");
   check(destination, "scenario.destination");
   for (const auto& ch : changes) {
     if (!(ch.after_route_s >= 0.0) || !std::isfinite(ch.after_route_s))
@@ -55,7 +57,8 @@ void NetSimScenario::validate() const {
 void NetSimOptions::validate() const {
   auto pos = [](double v, const char* n) {
     if (!(v > 0.0) || !std::isfinite(v))
-      throw Error(std::string("netsim.") + n, 0, "expected a positive finite number, got " + std::to_string(v));
+      throw Error(std::string("netsim.") + n, 0,
+                  "expected a positive finite number, got " + std::to_string(v));
   };
   pos(sensing_range_m, "sensing_range_m");
   pos(speed_mps, "speed_mps");
@@ -69,7 +72,8 @@ void NetSimOptions::validate() const {
     throw Error("netsim.robot_radius_m", 0, "expected a finite number >= 0");
   if (!(path_wait_s >= 0.0) || !std::isfinite(path_wait_s))
     throw Error("netsim.path_wait_s", 0, "expected a finite number >= 0");
-  if (max_search_attempts < 1 || link_retries < 0 || hop_limit < 1 || hop_limit > 255 || repair_hops < 1)
+  if (max_search_attempts < 1 || link_retries < 0 || hop_limit < 1 || hop_limit > 255 ||
+      repair_hops < 1)
     throw Error("netsim", 0, "attempts/retries/hop limits out of range");
   radio.validate();
 }
@@ -94,12 +98,12 @@ struct Robot {
   // Decentralized search state (one search at a time: the latest Num).
   std::uint32_t s_num = kNone;
   bool s_done = false;
-  SearchMessage s_in;                  // what the sender told us (its points)
+  SearchMessage s_in;  // what the sender told us (its points)
   RobotId s_sender;
-  std::vector<VoronoiPoint> s_comb;    // sender points + own points (+ destination)
+  std::vector<VoronoiPoint> s_comb;  // sender points + own points (+ destination)
   PointSearch s_search;
-  std::size_t s_na = 0;                // number of sender points in s_comb
-  std::vector<std::size_t> s_sent;     // sent point index -> s_comb index
+  std::size_t s_na = 0;             // number of sender points in s_comb
+  std::vector<std::size_t> s_sent;  // sent point index -> s_comb index
   enum class Walk { kIdle, kBridge, kDestination } walk = Walk::kIdle;
   double walk_since_check = 0.0;
   double bridge_at = -1.0;  // when to start bridging if no continuable Search came
@@ -156,15 +160,18 @@ class Runner {
     for (int k = 1; k <= steps && !arrived_; ++k) {
       now_ = k * o_.dt_s;
       apply_changes();
-      for (auto& r : robots_) move(r);
+      for (auto& r : robots_)
+        move(r);
       radio_.set_time(now_);
       for (auto& r : robots_) {
-        for (auto& p : radio_.receive(r.id)) handle_packet(r, p);
+        for (auto& p : radio_.receive(r.id))
+          handle_packet(r, p);
       }
       timers();
       if (o_.record) {
         RecordedStep st{now_, {}};
-        for (const auto& r : robots_) st.positions.push_back(r.pos);
+        for (const auto& r : robots_)
+          st.positions.push_back(r.pos);
         res_.recording.steps.push_back(std::move(st));
       }
     }
@@ -177,7 +184,8 @@ class Runner {
     M.messages = st.total.messages;
     for (int t = 1; t < kMessageTypeCount; ++t)
       if (st.by_type[static_cast<std::size_t>(t)].messages > 0)
-        M.by_type[std::string(to_string(static_cast<MessageType>(t)))] = st.by_type[static_cast<std::size_t>(t)];
+        M.by_type[std::string(to_string(static_cast<MessageType>(t)))] =
+            st.by_type[static_cast<std::size_t>(t)];
     auto mean = [&](MessageType t) {
       const auto& c = st.by_type[static_cast<std::size_t>(t)];
       return c.messages ? static_cast<double>(c.bytes) / static_cast<double>(c.messages) : 0.0;
@@ -208,7 +216,8 @@ class Runner {
         res_.recording.final_local_maps.push_back(r.map.grid());
         res_.recording.open_points.push_back(points(r).open);
       }
-      for (const auto& p : route_) res_.recording.route.push_back(p.position);
+      for (const auto& p : route_)
+        res_.recording.route.push_back(p.position);
       if (o_.method == Method::kCentralized) res_.recording.route = src().waypoints;
     }
     return std::move(res_);
@@ -271,7 +280,8 @@ class Runner {
     auto b = encode(e);
     radio_.send(r.id, to, b);
     record_msg(r.id, to, b);
-    outbox_.push_back({r.id, to, std::move(b), key_of(r.id, e.header.msg_id), 1, now_ + o_.link_timeout_s});
+    outbox_.push_back(
+        {r.id, to, std::move(b), key_of(r.id, e.header.msg_id), 1, now_ + o_.link_timeout_s});
   }
   void link_ack(Robot& r, const Header& h) {
     Envelope e{Header{r.id, h.sender, r.id, r.next_msg++, 0}, LinkAckMessage{h.origin, h.msg_id}};
@@ -323,7 +333,8 @@ class Runner {
       if (route_.empty() && now_ - search_started_ >= o_.search_timeout_s &&
           res_.metrics.search_attempts < o_.max_search_attempts)
         start_search();
-      if (!route_.empty() && blocked_since_ >= 0.0 && now_ - blocked_since_ >= o_.repair_timeout_s) {
+      if (!route_.empty() && blocked_since_ >= 0.0 &&
+          now_ - blocked_since_ >= o_.repair_timeout_s) {
         route_.clear();
         s.waypoints.clear();
         blocked_since_ = -1.0;
@@ -474,7 +485,8 @@ class Runner {
             std::min(wg.height - 1, std::max(a->y, b->y) + margin)};
     BinaryGrid win(GridGeometry{hi.x - lo.x + 1, hi.y - lo.y + 1, wg.resolution, {}}, 0);
     for (int y = 0; y < win.height(); ++y)
-      for (int x = 0; x < win.width(); ++x) win[Cell{x, y}] = r.map.at(Cell{x, y} + lo) == kOccupied ? 1 : 0;
+      for (int x = 0; x < win.width(); ++x)
+        win[Cell{x, y}] = r.map.at(Cell{x, y} + lo) == kOccupied ? 1 : 0;
     const auto result = timed(r, [&] {
       BinaryGrid pg = planning::make_planning_grid(win, o_.robot_radius_m);
       pg[*a - lo] = 0;
@@ -485,7 +497,8 @@ class Runner {
     r.m.work += win.size() * 2 + result.expanded;
     if (!result.ok()) return false;
     r.waypoints.clear();
-    for (std::size_t i = 1; i < result.path.size(); ++i) r.waypoints.push_back(wg.cell_center(result.path[i] + lo));
+    for (std::size_t i = 1; i < result.path.size(); ++i)
+      r.waypoints.push_back(wg.cell_center(result.path[i] + lo));
     r.waypoints.push_back(target);
     r.wp = 0;
     return true;
@@ -519,7 +532,8 @@ class Runner {
     pseudo.num = num;
     pseudo.destination = sc_.destination;
     const double cl = clearance_at(s.map.grid(), s.pos);
-    pseudo.open_points = {VoronoiPoint{s.pos, static_cast<float>(std::max(cl, o_.robot_radius_m + 0.05)), 0.0f}};
+    pseudo.open_points = {
+        VoronoiPoint{s.pos, static_cast<float>(std::max(cl, o_.robot_radius_m + 0.05)), 0.0f}};
     s.got_paths.clear();
     s.path_deadline = -1.0;
     s.path_forwarded = false;
@@ -537,7 +551,8 @@ class Runner {
     const bool has_dest = dcl > o_.robot_radius_m;
     if (has_dest) r.s_comb.push_back(VoronoiPoint{sc_.destination, static_cast<float>(dcl), 0.0f});
     std::vector<double> start(r.s_comb.size(), kInf);
-    for (std::size_t i = 0; i < r.s_na; ++i) start[i] = r.s_comb[i].cost;
+    for (std::size_t i = 0; i < r.s_na; ++i)
+      start[i] = r.s_comb[i].cost;
     r.s_search = timed(r, [&] { return search_points(r.s_comb, start, o_.robot_radius_m); });
     r.m.work += r.s_search.work;
     if (has_dest && !std::isfinite(r.s_search.cost.back())) {
@@ -547,7 +562,8 @@ class Runner {
       for (std::size_t i = r.s_na; i < d; ++i) {
         if (!std::isfinite(r.s_search.cost[i])) continue;
         const double c = r.s_search.cost[i] + distance(r.s_comb[i].position, sc_.destination);
-        if (c < r.s_search.cost[d] && segment_known_free(r.map, r.s_comb[i].position, sc_.destination)) {
+        if (c < r.s_search.cost[d] &&
+            segment_known_free(r.map, r.s_comb[i].position, sc_.destination)) {
           r.s_search.cost[d] = c;
           r.s_search.parent[d] = static_cast<std::int32_t>(i);
         }
@@ -560,8 +576,8 @@ class Runner {
   }
   [[nodiscard]] bool dest_reached(const Robot& r) const {
     const double dcl = clearance_at(r.map.grid(), sc_.destination);
-    return dcl > o_.robot_radius_m && r.s_comb.size() > r.s_na && std::isfinite(r.s_search.cost.back()) &&
-           r.s_comb.back().position == sc_.destination;
+    return dcl > o_.robot_radius_m && r.s_comb.size() > r.s_na &&
+           std::isfinite(r.s_search.cost.back()) && r.s_comb.back().position == sc_.destination;
   }
 
   void on(Robot& r, const Header& h, const SearchMessage& m) {
@@ -575,7 +591,8 @@ class Runner {
       r.s_in = m;
       r.s_sender = h.sender;
       if (try_continue(r)) {
-        NS_DEBUG("t=%.1f robot %u continues search %u from %u\n", now_, r.id.value, m.num, h.sender.value);
+        NS_DEBUG("t=%.1f robot %u continues search %u from %u\n", now_, r.id.value, m.num,
+                 h.sender.value);
         r.walk = Robot::Walk::kIdle;
         r.waypoints.clear();
         r.bridge_at = -1.0;
@@ -601,7 +618,9 @@ class Runner {
     r.path_forwarded = false;
     search_hops_ = hops;
     const bool cont = try_continue(r);
-    NS_DEBUG("t=%.1f robot %u search %u from %u: continues=%d own=%zu sent=%zu pos=(%.1f,%.1f)\n", now_, r.id.value, m.num, sender.value, cont ? 1 : 0, points(r).open.size(), r.s_sent.size(), r.pos.x, r.pos.y);
+    NS_DEBUG("t=%.1f robot %u search %u from %u: continues=%d own=%zu sent=%zu pos=(%.1f,%.1f)\n",
+             now_, r.id.value, m.num, sender.value, cont ? 1 : 0, points(r).open.size(),
+             r.s_sent.size(), r.pos.x, r.pos.y);
     if (cont) {
       after_continue(r, hops);
       return;
@@ -693,10 +712,13 @@ class Runner {
     r.points_dirty = true;
     if (is_source(r) && !r.s_in.open_points.empty()) {
       const double cl = clearance_at(r.map.grid(), r.pos);
-      r.s_in.open_points[0] = VoronoiPoint{r.pos, static_cast<float>(std::max(cl, o_.robot_radius_m + 0.05)), 0.0f};
+      r.s_in.open_points[0] =
+          VoronoiPoint{r.pos, static_cast<float>(std::max(cl, o_.robot_radius_m + 0.05)), 0.0f};
     }
     const bool cont = try_continue(r);
-    NS_DEBUG("t=%.1f robot %u walk check cont=%d dest=%d arrived=%d dcl=%.2f\n", now_, r.id.value, cont ? 1 : 0, dest_reached(r) ? 1 : 0, arrived ? 1 : 0, clearance_at(r.map.grid(), sc_.destination));
+    NS_DEBUG("t=%.1f robot %u walk check cont=%d dest=%d arrived=%d dcl=%.2f\n", now_, r.id.value,
+             cont ? 1 : 0, dest_reached(r) ? 1 : 0, arrived ? 1 : 0,
+             clearance_at(r.map.grid(), sc_.destination));
     if (r.walk == Robot::Walk::kBridge) {
       if (cont) {
         r.walk = Robot::Walk::kIdle;
@@ -719,7 +741,8 @@ class Runner {
     }
   }
 
-  /// The chain of s_comb indices ending at `last`, split into the sender's exit point and r's piece.
+  /// The chain of s_comb indices ending at `last`, split into the sender's exit point and r's
+  /// piece.
   std::pair<std::uint32_t, std::vector<VoronoiPoint>> own_piece(const Robot& r, std::size_t last) {
     const auto chain = trace_points(r.s_search, last);
     std::uint32_t exit = 0;
@@ -760,7 +783,8 @@ class Runner {
       on_repair_path(r, m);
       return;
     }
-    NS_DEBUG("t=%.1f robot %u got path num %u exit %u (s_num %u fwd %d sent %zu)\n", now_, r.id.value, m.num, m.exit_index, r.s_num, r.path_forwarded ? 1 : 0, r.s_sent.size());
+    NS_DEBUG("t=%.1f robot %u got path num %u exit %u (s_num %u fwd %d sent %zu)\n", now_,
+             r.id.value, m.num, m.exit_index, r.s_num, r.path_forwarded ? 1 : 0, r.s_sent.size());
     if (m.num != r.s_num || r.path_forwarded || m.exit_index >= r.s_sent.size()) return;
     r.got_paths.push_back(m);
     if (r.path_deadline < 0.0) r.path_deadline = now_ + o_.path_wait_s;
@@ -777,7 +801,8 @@ class Runner {
       const auto& p = r.got_paths[k];
       const std::size_t ci = r.s_sent[p.exit_index];
       double c = r.s_search.cost[ci] + route_length(p.whole_path);
-      if (!p.whole_path.empty()) c += distance(r.s_comb[ci].position, p.whole_path.front().position);
+      if (!p.whole_path.empty())
+        c += distance(r.s_comb[ci].position, p.whole_path.front().position);
       if (c < best) {
         best = c;
         bi = k;
@@ -805,7 +830,8 @@ class Runner {
     route_.clear();
     route_.push_back(VoronoiPoint{s.pos, 1.0f, 0.0f});
     route_.insert(route_.end(), p.whole_path.begin(), p.whole_path.end());
-    if (route_.back().position != sc_.destination) route_.push_back(VoronoiPoint{sc_.destination, 1.0f, 0.0f});
+    if (route_.back().position != sc_.destination)
+      route_.push_back(VoronoiPoint{sc_.destination, 1.0f, 0.0f});
     set_source_waypoints(0);
     if (first_route_ < 0.0) {
       first_route_ = now_;
@@ -817,14 +843,16 @@ class Runner {
   void set_source_waypoints(std::size_t from) {
     auto& s = src();
     s.waypoints.clear();
-    for (std::size_t i = from; i < route_.size(); ++i) s.waypoints.push_back(route_[i].position);
+    for (std::size_t i = from; i < route_.size(); ++i)
+      s.waypoints.push_back(route_[i].position);
     s.wp = 0;
     route_base_ = from;
   }
 
   // ---- decentralized: Repair (Tables 4–5) ---------------------------------------------------
   /// Broken segments of `path` as seen in r's map: [first broken point, first good point after).
-  std::optional<std::pair<std::uint32_t, std::uint32_t>> find_break(Robot& r, const std::vector<VoronoiPoint>& path, std::size_t from) {
+  std::optional<std::pair<std::uint32_t, std::uint32_t>> find_break(
+      Robot& r, const std::vector<VoronoiPoint>& path, std::size_t from) {
     std::optional<std::pair<std::uint32_t, std::uint32_t>> br;
     for (std::size_t i = from; i + 1 < path.size(); ++i) {
       if (segment_blocked(r.map, path[i].position, path[i + 1].position)) {
@@ -837,7 +865,8 @@ class Runner {
   }
 
   /// A detour through r's open points joining path[0..from] to path[to..]; empty when none.
-  std::vector<VoronoiPoint> detour(Robot& r, const std::vector<VoronoiPoint>& path, std::uint32_t from, std::uint32_t to) {
+  std::vector<VoronoiPoint> detour(Robot& r, const std::vector<VoronoiPoint>& path,
+                                   std::uint32_t from, std::uint32_t to) {
     const auto& own = points(r).open;
     std::vector<VoronoiPoint> comb;
     std::vector<double> start;
@@ -867,7 +896,8 @@ class Runner {
       if (!std::isfinite(s.cost[i])) continue;
       const std::size_t pi = to + (i - n_own_end);
       double rest = 0.0;
-      for (std::size_t k = pi + 1; k < path.size(); ++k) rest += distance(path[k - 1].position, path[k].position);
+      for (std::size_t k = pi + 1; k < path.size(); ++k)
+        rest += distance(path[k - 1].position, path[k].position);
       if (s.cost[i] + rest < best) {
         best = s.cost[i] + rest;
         bi = i;
@@ -877,12 +907,15 @@ class Runner {
     const auto chain = trace_points(s, bi);
     // The chain must use at least one own point and its moves must be free in r's map.
     bool uses_own = false;
-    for (std::size_t i : chain) uses_own |= (i >= n_pre && i < n_own_end);
+    for (std::size_t i : chain)
+      uses_own |= (i >= n_pre && i < n_own_end);
     if (!uses_own) return {};
     for (std::size_t k = 1; k < chain.size(); ++k)
       if (segment_blocked(r.map, comb[chain[k - 1]].position, comb[chain[k]].position)) return {};
-    std::vector<VoronoiPoint> out(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(chain.front() + 1));
-    for (std::size_t k = 1; k < chain.size(); ++k) out.push_back(comb[chain[k]]);
+    std::vector<VoronoiPoint> out(path.begin(),
+                                  path.begin() + static_cast<std::ptrdiff_t>(chain.front() + 1));
+    for (std::size_t k = 1; k < chain.size(); ++k)
+      out.push_back(comb[chain[k]]);
     const std::size_t pi = to + (bi - n_own_end);
     out.insert(out.end(), path.begin() + static_cast<std::ptrdiff_t>(pi + 1), path.end());
     return out;
@@ -951,7 +984,8 @@ class Runner {
     for (std::size_t i = route_.size(); i-- > 0;) {
       if (distance(route_[i].position, whole.front().position) < 1e-3) {
         if (i + 1 < done) break;  // already passed: the splice point is behind the source
-        std::vector<VoronoiPoint> n(route_.begin(), route_.begin() + static_cast<std::ptrdiff_t>(i));
+        std::vector<VoronoiPoint> n(route_.begin(),
+                                    route_.begin() + static_cast<std::ptrdiff_t>(i));
         n.insert(n.end(), whole.begin(), whole.end());
         route_ = std::move(n);
         set_source_waypoints(std::max<std::size_t>(done, 1) - 1);
@@ -968,14 +1002,17 @@ class Runner {
     // Only the part within sensing range matters; find_break checks the remaining route.
     std::vector<VoronoiPoint> rest{VoronoiPoint{s.pos, 1.0f, 0.0f}};
     const std::size_t next = route_base_ + s.wp;
-    rest.insert(rest.end(), route_.begin() + static_cast<std::ptrdiff_t>(std::min(next, route_.size())), route_.end());
+    rest.insert(rest.end(),
+                route_.begin() + static_cast<std::ptrdiff_t>(std::min(next, route_.size())),
+                route_.end());
     const auto br = find_break(s, rest, 0);
     if (!br) return;
     if (blocked_since_ < 0.0) blocked_since_ = now_;
     ++res_.metrics.repairs;
     auto fixed = detour(s, rest, br->first, br->second);
     if (!fixed.empty()) {
-      route_.erase(route_.begin() + static_cast<std::ptrdiff_t>(std::min(next, route_.size())), route_.end());
+      route_.erase(route_.begin() + static_cast<std::ptrdiff_t>(std::min(next, route_.size())),
+                   route_.end());
       route_.insert(route_.end(), fixed.begin() + 1, fixed.end());
       set_source_waypoints(std::min(next, route_.size()));
       blocked_since_ = -1.0;
@@ -1059,7 +1096,8 @@ class Runner {
       pg[lb] = 0;
       planning::AStarPlanner planner;
       auto r = planner.plan(pg, la, lb);
-      for (auto& c : r.path) c = c + s.map.offset();
+      for (auto& c : r.path)
+        c = c + s.map.offset();
       return r;
     });
     s.m.work += s.map.grid().size() * 3 + result.expanded;
@@ -1068,7 +1106,8 @@ class Runner {
       return;
     }
     s.waypoints.clear();
-    for (std::size_t i = 1; i < result.path.size(); ++i) s.waypoints.push_back(wg.cell_center(result.path[i]));
+    for (std::size_t i = 1; i < result.path.size(); ++i)
+      s.waypoints.push_back(wg.cell_center(result.path[i]));
     s.waypoints.push_back(sc_.destination);
     s.wp = 0;
     if (first_route_ < 0.0) {

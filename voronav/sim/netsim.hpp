@@ -44,10 +44,10 @@ struct ObstacleChange {
 };
 
 struct NetSimScenario {
-  OccupancyGrid world;           ///< ground truth (kFree / kOccupied)
-  std::vector<Vec2> robots;      ///< initial positions [m]; robots[source] is the source
+  OccupancyGrid world;       ///< ground truth (kFree / kOccupied)
+  std::vector<Vec2> robots;  ///< initial positions [m]; robots[source] is the source
   std::size_t source = 0;
-  Vec2 destination;              ///< [m]
+  Vec2 destination;  ///< [m]
   std::vector<ObstacleChange> changes;
   /// Throws voronav::Error when robots/destination are off the map or in obstacles, etc.
   void validate() const;
@@ -58,23 +58,23 @@ struct NetSimOptions {
   double sensing_range_m = 3.0;  ///< seed 000: ultrasonic range
   double speed_mps = 1.0;        ///< seed 000: 1 m/s
   double robot_radius_m = 0.2;
-  double dt_s = 0.2;             ///< simulation step [s]
-  double time_limit_s = 600.0;   ///< a run fails when the source has not arrived by then
+  double dt_s = 0.2;            ///< simulation step [s]
+  double time_limit_s = 600.0;  ///< a run fails when the source has not arrived by then
   network::RadioOptions radio{};
   network::VoronoiPointsOptions points{};
-  double path_wait_s = 0.5;      ///< Table 3 "wait for a little while" [s]
+  double path_wait_s = 0.5;  ///< Table 3 "wait for a little while" [s]
   /// A robot that cannot continue a Search waits this long for one it can continue before it
   /// walks over to sense the gap itself [s].
   double bridge_wait_s = 2.0;
   double search_timeout_s = 60.0;  ///< source retries the Search with Num+1 after this [s]
   int max_search_attempts = 12;
-  double link_timeout_s = 0.3;   ///< hop-by-hop retry after no LinkAck [s]
+  double link_timeout_s = 0.3;  ///< hop-by-hop retry after no LinkAck [s]
   int link_retries = 6;
-  int hop_limit = 32;            ///< flood bound (hops) for Search, Request and Repair
-  int repair_hops = 2;           ///< Repair reaches neighbours up to this many hops
-  double collect_s = 1.5;        ///< centralized: wait this long without new Ack before planning
-  double repair_timeout_s = 8.0; ///< decentralized: source re-searches when blocked this long
-  bool record = false;           ///< keep a Recording of every step
+  int hop_limit = 32;             ///< flood bound (hops) for Search, Request and Repair
+  int repair_hops = 2;            ///< Repair reaches neighbours up to this many hops
+  double collect_s = 1.5;         ///< centralized: wait this long without new Ack before planning
+  double repair_timeout_s = 8.0;  ///< decentralized: source re-searches when blocked this long
+  bool record = false;            ///< keep a Recording of every step
   std::uint64_t seed = 1;
   void validate() const;
 };
@@ -114,10 +114,10 @@ struct NetSimMetrics {
   double arrival_time_s = -1.0;  ///< when the source reached the destination (-1 never)
   double travel_m = 0.0;         ///< eq. 3: sum over robots
   double source_travel_m = 0.0;
-  double route_length_m = 0.0;   ///< eq. 2 length of the first route
+  double route_length_m = 0.0;  ///< eq. 2 length of the first route
   std::uint64_t traffic_bytes = 0;
   std::uint64_t messages = 0;
-  std::uint64_t computation = 0;      ///< eq. 8/9: total work units
+  std::uint64_t computation = 0;  ///< eq. 8/9: total work units
   std::uint64_t max_robot_computation = 0;
   double cpu_s = 0.0;
   double max_robot_cpu_s = 0.0;
@@ -126,8 +126,8 @@ struct NetSimMetrics {
   double beta_bytes = 0.0;   ///< mean centralized Ack size
   double gamma_bytes = 0.0;  ///< mean decentralized answer (Path) size
   int search_attempts = 0;
-  int repairs = 0;           ///< breaks handled (decentralized Repair / centralized re-request)
-  int replans = 0;           ///< centralized A* plans
+  int repairs = 0;  ///< breaks handled (decentralized Repair / centralized re-request)
+  int replans = 0;  ///< centralized A* plans
   std::uint64_t corrupt_packets = 0;
   double simulated_s = 0.0;
   double wall_s = 0.0;

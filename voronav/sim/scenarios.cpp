@@ -14,11 +14,16 @@ namespace voronav::sim {
 
 PaperScenario paper_scenario(int id) {
   switch (id) {
-    case 1: return {1, 6, 40.0};
-    case 2: return {2, 6, 80.0};
-    case 3: return {3, 12, 40.0};
-    case 4: return {4, 12, 80.0};
-    default: throw Error("scenario", 0, "expected 1, 2, 3 or 4, got " + std::to_string(id));
+    case 1:
+      return {1, 6, 40.0};
+    case 2:
+      return {2, 6, 80.0};
+    case 3:
+      return {3, 12, 40.0};
+    case 4:
+      return {4, 12, 80.0};
+    default:
+      throw Error("scenario", 0, "expected 1, 2, 3 or 4, got " + std::to_string(id));
   }
 }
 
@@ -32,8 +37,10 @@ planning::PlanResult truth_plan(const BinaryGrid& pg, Cell a, Cell b) {
 }  // namespace
 
 NetSimScenario place_robots(const OfficeWorld& world, const PlacementOptions& o) {
-  if (o.robots < 1 || o.robots > 100000) throw Error("placement.robots", 0, "expected 1..100000 robots");
-  if (o.changes < 0 || o.changes > 16) throw Error("placement.changes", 0, "expected 0..16 changes");
+  if (o.robots < 1 || o.robots > 100000)
+    throw Error("placement.robots", 0, "expected 1..100000 robots");
+  if (o.changes < 0 || o.changes > 16)
+    throw Error("placement.changes", 0, "expected 0..16 changes");
   NetSimScenario sc;
   sc.world = world.grid;
   const auto& g = world.grid.geometry();
@@ -67,7 +74,8 @@ NetSimScenario place_robots(const OfficeWorld& world, const PlacementOptions& o)
     }
   }
   sc.robots.push_back(g.cell_center(s));
-  for (int i = 1; i < o.robots; ++i) sc.robots.push_back(g.cell_center(pick(i % 2 == 1 ? vor : free_cells)));
+  for (int i = 1; i < o.robots; ++i)
+    sc.robots.push_back(g.cell_center(pick(i % 2 == 1 ? vor : free_cells)));
   sc.source = 0;
   sc.destination = g.cell_center(dest);
   // Obstacle changes: close doors on the true shortest route, ahead of the source.
@@ -81,11 +89,14 @@ NetSimScenario place_robots(const OfficeWorld& world, const PlacementOptions& o)
       for (const auto& d : world.doors) {
         if (distance(d.centre, w) > 0.6) continue;
         bool used = false;
-        for (const auto& ch : sc.changes) used |= ch.cells == d.cells;
+        for (const auto& ch : sc.changes)
+          used |= ch.cells == d.cells;
         if (used) continue;
         BinaryGrid trial = changed;
-        for (Cell c : d.cells) trial[c] = 1;
-        if (!truth_plan(planning::make_planning_grid(trial, o.robot_radius_m + 0.1), s, dest).ok()) continue;
+        for (Cell c : d.cells)
+          trial[c] = 1;
+        if (!truth_plan(planning::make_planning_grid(trial, o.robot_radius_m + 0.1), s, dest).ok())
+          continue;
         changed = std::move(trial);
         ++made;
         sc.changes.push_back({o.change_every_s * made, d.cells, kOccupied});
@@ -144,8 +155,8 @@ Summary summarize(const std::vector<NetSimMetrics>& runs) {
   }
   const double n = static_cast<double>(runs.size());
   s.success_rate = ok / n;
-  for (double* v : {&s.traffic_bytes, &s.messages, &s.computation, &s.max_robot_computation, &s.cpu_s,
-                    &s.max_robot_cpu_s, &s.alpha_bytes, &s.beta_bytes, &s.gamma_bytes})
+  for (double* v : {&s.traffic_bytes, &s.messages, &s.computation, &s.max_robot_computation,
+                    &s.cpu_s, &s.max_robot_cpu_s, &s.alpha_bytes, &s.beta_bytes, &s.gamma_bytes})
     *v /= n;
   if (ok > 0) {
     s.route_time_s /= ok;

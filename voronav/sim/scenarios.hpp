@@ -25,14 +25,15 @@ struct PaperScenario {
 
 struct PlacementOptions {
   int robots = 6;
-  int changes = 0;             ///< obstacle changes (closed doors), 0..3 in Table 7
-  double change_every_s = 4.0; ///< change k happens k * this after the route is found
+  int changes = 0;              ///< obstacle changes (closed doors), 0..3 in Table 7
+  double change_every_s = 4.0;  ///< change k happens k * this after the route is found
   double robot_radius_m = 0.2;
   std::uint64_t seed = 1;
 };
 
 /// Places robots, source, destination and changes in an office world.
-[[nodiscard]] NetSimScenario place_robots(const OfficeWorld& world, const PlacementOptions& options);
+[[nodiscard]] NetSimScenario place_robots(const OfficeWorld& world,
+                                          const PlacementOptions& options);
 
 /// Run `run` (1..16) of Table 7 for paper scenario `id`; `seed` varies the worlds.
 [[nodiscard]] NetSimScenario make_paper_run(int id, int run, std::uint64_t seed = 1);

@@ -31,10 +31,12 @@ void LocalMap::ensure(Cell lo, Cell hi) {
   g.height = nhi.y - nlo.y + 1;
   g.resolution = world_.resolution;
   g.origin = world_.origin;
-  g.origin.position = world_.grid_to_world({static_cast<double>(nlo.x), static_cast<double>(nlo.y)});
+  g.origin.position =
+      world_.grid_to_world({static_cast<double>(nlo.x), static_cast<double>(nlo.y)});
   OccupancyGrid n(g, kUnknown);
   for (int y = 0; y < grid_.height(); ++y)
-    for (int x = 0; x < grid_.width(); ++x) n[Cell{x, y} + offset_ - nlo] = grid_[Cell{x, y}];
+    for (int x = 0; x < grid_.width(); ++x)
+      n[Cell{x, y} + offset_ - nlo] = grid_[Cell{x, y}];
   grid_ = std::move(n);
   offset_ = nlo;
 }
@@ -45,8 +47,8 @@ void LocalMap::set(Cell w, std::int8_t v) {
 }
 
 std::size_t LocalMap::known_cells() const {
-  return static_cast<std::size_t>(
-      std::count_if(grid_.values().begin(), grid_.values().end(), [](std::int8_t v) { return v != kUnknown; }));
+  return static_cast<std::size_t>(std::count_if(grid_.values().begin(), grid_.values().end(),
+                                                [](std::int8_t v) { return v != kUnknown; }));
 }
 
 SenseResult sense(const BinaryGrid& truth, Vec2 position, double range_m, LocalMap& map) {
@@ -83,7 +85,8 @@ SenseResult sense(const BinaryGrid& truth, Vec2 position, double range_m, LocalM
 void OfficeWorldOptions::validate() const {
   auto pos = [](double v, const char* n) {
     if (!(v > 0.0) || !std::isfinite(v))
-      throw Error(std::string("office.") + n, 0, "expected a positive finite number, got " + std::to_string(v));
+      throw Error(std::string("office.") + n, 0,
+                  "expected a positive finite number, got " + std::to_string(v));
   };
   pos(width_m, "width_m");
   pos(height_m, "height_m");
@@ -108,11 +111,13 @@ OfficeWorld make_office_world(const OfficeWorldOptions& o) {
   auto& m = out.grid;
   const int wall = std::max(1, static_cast<int>(std::lround(o.wall_m / o.resolution)));
   const int door = std::max(2, static_cast<int>(std::lround(o.door_m / o.resolution)));
-  const int pitch = std::max(door + 2 * wall + 4, static_cast<int>(std::lround(o.room_size_m / o.resolution)));
+  const int pitch =
+      std::max(door + 2 * wall + 4, static_cast<int>(std::lround(o.room_size_m / o.resolution)));
   const int nx = std::max(1, (w - wall) / pitch), ny = std::max(1, (h - wall) / pitch);
   auto block = [&](int x0, int y0, int x1, int y1) {
     for (int y = std::max(0, y0); y <= std::min(h - 1, y1); ++y)
-      for (int x = std::max(0, x0); x <= std::min(w - 1, x1); ++x) m[Cell{x, y}] = kOccupied;
+      for (int x = std::max(0, x0); x <= std::min(w - 1, x1); ++x)
+        m[Cell{x, y}] = kOccupied;
   };
   // Outer walls.
   block(0, 0, w - 1, wall - 1);
@@ -121,14 +126,17 @@ OfficeWorld make_office_world(const OfficeWorldOptions& o) {
   block(w - wall, 0, w - 1, h - 1);
   std::mt19937_64 rng(o.seed);
   auto corridor_row = [&](int j) { return ny >= 3 && j % 3 == 1; };
-  // Room x-boundaries at i*pitch (i = 1..nx-1), y-boundaries at j*pitch; the last room takes the rest.
+  // Room x-boundaries at i*pitch (i = 1..nx-1), y-boundaries at j*pitch; the last room takes the
+  // rest.
   auto xb = [&](int i) { return i >= nx ? w - wall : i * pitch; };
   auto yb = [&](int j) { return j >= ny ? h - wall : j * pitch; };
   // Union-find over rooms for a spanning tree of doors.
   std::vector<int> parent(static_cast<std::size_t>(nx * ny));
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int a) {
-    while (parent[static_cast<std::size_t>(a)] != a) a = parent[static_cast<std::size_t>(a)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(a)])];
+    while (parent[static_cast<std::size_t>(a)] != a)
+      a = parent[static_cast<std::size_t>(a)] =
+          parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(a)])];
     return a;
   };
   struct Wall {
@@ -139,13 +147,15 @@ OfficeWorld make_office_world(const OfficeWorldOptions& o) {
   std::vector<Wall> walls;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
-      if (i + 1 < nx && !corridor_row(j)) walls.push_back({j * nx + i, j * nx + i + 1, true, i + 1, j});
+      if (i + 1 < nx && !corridor_row(j))
+        walls.push_back({j * nx + i, j * nx + i + 1, true, i + 1, j});
       if (j + 1 < ny) walls.push_back({j * nx + i, (j + 1) * nx + i, false, i, j + 1});
     }
   // Corridor rows are one open space: merge their rooms.
   for (int j = 0; j < ny; ++j)
     if (corridor_row(j))
-      for (int i = 0; i + 1 < nx; ++i) parent[static_cast<std::size_t>(find(j * nx + i + 1))] = find(j * nx + i);
+      for (int i = 0; i + 1 < nx; ++i)
+        parent[static_cast<std::size_t>(find(j * nx + i + 1))] = find(j * nx + i);
   std::shuffle(walls.begin(), walls.end(), rng);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (const auto& wl : walls) {
@@ -187,14 +197,16 @@ OfficeWorld make_office_world(const OfficeWorldOptions& o) {
     }
     if (!d.cells.empty()) {
       Vec2 c{};
-      for (Cell k : d.cells) c += m.geometry().cell_center(k);
+      for (Cell k : d.cells)
+        c += m.geometry().cell_center(k);
       d.centre = c / static_cast<double>(d.cells.size());
       out.doors.push_back(std::move(d));
     }
   }
   // Re-open doors possibly overwritten by a later wall block at a junction.
   for (const auto& d : out.doors)
-    for (Cell c : d.cells) m[c] = kFree;
+    for (Cell c : d.cells)
+      m[c] = kFree;
   // Furniture: small blocks away from the walls, never on a door approach.
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {

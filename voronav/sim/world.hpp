@@ -53,10 +53,10 @@ SenseResult sense(const BinaryGrid& truth, Vec2 position, double range_m, LocalM
 struct OfficeWorldOptions {
   double width_m = 40.0;
   double height_m = 40.0;
-  double resolution = 0.2;      ///< [m/cell]
-  double room_size_m = 8.0;     ///< room pitch [m]
-  double wall_m = 0.4;          ///< wall thickness [m]
-  double door_m = 1.6;          ///< door opening [m]
+  double resolution = 0.2;        ///< [m/cell]
+  double room_size_m = 8.0;       ///< room pitch [m]
+  double wall_m = 0.4;            ///< wall thickness [m]
+  double door_m = 1.6;            ///< door opening [m]
   double extra_door_prob = 0.35;  ///< probability of a door beyond the spanning tree
   int furniture_per_room = 1;
   std::uint64_t seed = 1;
