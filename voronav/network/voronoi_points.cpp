@@ -152,7 +152,7 @@ bool continues(const VoronoiPoint& p, const VoronoiPoint& q, double r) {
 }
 
 PointSearch search_points(std::span<const VoronoiPoint> points, std::span<const double> start_cost,
-                          double robot_radius_m) {
+                          double robot_radius_m, const ExtraEdge& extra_edge) {
   if (start_cost.size() != points.size())
     throw Error("search_points", 0, "start_cost must have one entry per point");
   const std::size_t n = points.size();
@@ -174,7 +174,9 @@ PointSearch search_points(std::span<const VoronoiPoint> points, std::span<const 
     done[i] = 1;
     for (std::size_t j = 0; j < n; ++j) {
       ++s.work;
-      if (done[j] || !continues(points[i], points[j], robot_radius_m)) continue;
+      if (done[j]) continue;
+      if (!continues(points[i], points[j], robot_radius_m) && !(extra_edge && extra_edge(i, j)))
+        continue;
       const double nc = c + distance(points[i].position, points[j].position);
       if (nc < s.cost[j]) {
         s.cost[j] = nc;

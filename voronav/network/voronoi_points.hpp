@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -59,8 +60,12 @@ struct PointSearch {
 
 /// Multi-source Dijkstra over `points` with edges between points that continue each other,
 /// weighted by Euclidean length. `start_cost[i]` (+inf = not a start) seeds each point.
+/// Optional extra edges (e.g. straight moves a robot has checked in its own map).
+using ExtraEdge = std::function<bool(std::size_t, std::size_t)>;
+
 [[nodiscard]] PointSearch search_points(std::span<const VoronoiPoint> points,
-                                        std::span<const double> start_cost, double robot_radius_m);
+                                        std::span<const double> start_cost, double robot_radius_m,
+                                        const ExtraEdge& extra_edge = {});
 
 /// Chain of point indices ending at `last` by following parents.
 [[nodiscard]] std::vector<std::size_t> trace_points(const PointSearch& s, std::size_t last);

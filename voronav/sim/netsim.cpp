@@ -83,6 +83,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 constexpr std::uint32_t kRepairFlag = 0x80000000u;
+constexpr double kUnreached = 1e8;  // cost sent for an open point the Search has not reached
 
 struct Robot {
   RobotId id;
@@ -98,8 +99,16 @@ struct Robot {
   // Decentralized search state (one search at a time: the latest Num).
   std::uint32_t s_num = kNone;
   bool s_done = false;
-  SearchMessage s_in;  // what the sender told us (its points)
+  SearchMessage s_in;  // what the senders told us: all their points, concatenated
   RobotId s_sender;
+  struct SenderInfo {
+    RobotId id;
+    std::vector<RobotId> relays;
+    std::size_t offset = 0;  // first of its points in s_in.open_points
+    std::size_t count = 0;
+  };
+  std::vector<SenderInfo> s_senders;
+  int reforwards = 0;
   std::vector<VoronoiPoint> s_comb;  // sender points + own points (+ destination)
   PointSearch s_search;
   std::size_t s_na = 0;             // number of sender points in s_comb
@@ -408,6 +417,7 @@ class Runner {
       }
     }
     r.m.travel_m += moved;
+    if (is_source(r) && moved > 0.0) trail_.push_back(r.pos);
     radio_.update_position(r.id, r.pos);
     do_sense(r);
     const bool changed = last_sense_changed_;
@@ -526,6 +536,7 @@ class Runner {
     auto& s = src();
     ++res_.metrics.search_attempts;
     search_started_ = now_;
+    trail_ = {s.pos};
     const std::uint32_t num = ++search_num_;
     SearchMessage pseudo;
     pseudo.source = s.id;
@@ -552,8 +563,21 @@ class Runner {
     if (has_dest) r.s_comb.push_back(VoronoiPoint{sc_.destination, static_cast<float>(dcl), 0.0f});
     std::vector<double> start(r.s_comb.size(), kInf);
     for (std::size_t i = 0; i < r.s_na; ++i)
-      start[i] = r.s_comb[i].cost;
-    r.s_search = timed(r, [&] { return search_points(r.s_comb, start, o_.robot_radius_m); });
+      start[i] = r.s_comb[i].cost < kUnreached ? r.s_comb[i].cost : kInf;
+    // Within its own map a robot may also move straight between its own points when the move is
+    // known free (it checks the cells itself; at most 6 m apart to bound the work).
+    const std::size_t own_end = r.s_na + own.size();
+    std::size_t los_cells = 0;
+    auto own_edge = [&](std::size_t i, std::size_t j) {
+      if (i < r.s_na || j < r.s_na || i >= own_end || j >= own_end) return false;
+      const Vec2 a = r.s_comb[i].position, b = r.s_comb[j].position;
+      if (distance(a, b) > 6.0) return false;
+      los_cells += static_cast<std::size_t>(distance(a, b) / sc_.world.resolution()) + 1;
+      return segment_known_free(r.map, a, b);
+    };
+    r.s_search =
+        timed(r, [&] { return search_points(r.s_comb, start, o_.robot_radius_m, own_edge); });
+    r.m.work += los_cells;
     r.m.work += r.s_search.work;
     if (has_dest && !std::isfinite(r.s_search.cost.back())) {
       // The destination is not an open point: join it to the best reached own point it can be
@@ -569,10 +593,15 @@ class Runner {
         }
       }
     }
+    // Every own point is sent, in a fixed order (so Path answers can name it by index); the
+    // unreached ones with cost kUnreached.
     r.s_sent.clear();
-    for (std::size_t i = r.s_na; i < r.s_na + own.size(); ++i)
-      if (std::isfinite(r.s_search.cost[i])) r.s_sent.push_back(i);
-    return !r.s_sent.empty() || (has_dest && std::isfinite(r.s_search.cost.back()));
+    bool reached = false;
+    for (std::size_t i = r.s_na; i < r.s_na + own.size(); ++i) {
+      r.s_sent.push_back(i);
+      reached |= std::isfinite(r.s_search.cost[i]);
+    }
+    return reached || (has_dest && std::isfinite(r.s_search.cost.back()));
   }
   [[nodiscard]] bool dest_reached(const Robot& r) const {
     const double dcl = clearance_at(r.map.grid(), sc_.destination);
@@ -585,11 +614,26 @@ class Runner {
     if (r.s_num != kNone && m.num < r.s_num) return;  // stale search
     if (r.s_num == m.num) {
       // Same search from another robot: only useful while this robot has not continued yet.
-      if (r.s_done || r.walk == Robot::Walk::kDestination) return;
-      const SearchMessage keep = r.s_in;
-      const RobotId keep_sender = r.s_sender;
-      r.s_in = m;
-      r.s_sender = h.sender;
+      if (r.walk == Robot::Walk::kDestination || r.path_forwarded) return;
+      // Merge the new sender's points with those already received (distributed shortest path:
+      // a robot that already forwarded re-forwards when its costs improve, at most 3 times).
+      r.s_senders.push_back({h.sender, m.relays, r.s_in.open_points.size(), m.open_points.size()});
+      r.s_in.open_points.insert(r.s_in.open_points.end(), m.open_points.begin(),
+                                m.open_points.end());
+      if (r.s_done) {
+        std::vector<double> before;
+        for (std::size_t i : r.s_sent)
+          before.push_back(r.s_search.cost[i]);
+        if (!try_continue(r) || r.reforwards >= 3) return;
+        bool better = before.size() != r.s_sent.size();
+        for (std::size_t k = 0; k < before.size() && !better; ++k)
+          better = r.s_search.cost[r.s_sent[k]] < before[k] - 1e-6;
+        if (better) {
+          ++r.reforwards;
+          forward_search(r, h.hops);
+        }
+        return;
+      }
       if (try_continue(r)) {
         NS_DEBUG("t=%.1f robot %u continues search %u from %u\n", now_, r.id.value, m.num,
                  h.sender.value);
@@ -597,9 +641,6 @@ class Runner {
         r.waypoints.clear();
         r.bridge_at = -1.0;
         after_continue(r, h.hops);
-      } else if (r.walk == Robot::Walk::kBridge) {
-        r.s_in = keep;  // keep bridging toward the first sender
-        r.s_sender = keep_sender;
       }
       return;
     }
@@ -611,7 +652,9 @@ class Runner {
     r.s_done = false;
     r.s_in = m;
     r.s_sender = sender;
-    r.walk = Robot::Walk::kIdle;
+    r.s_senders = {{sender, m.relays, 0, m.open_points.size()}};
+    r.reforwards = 0;
+    if (r.walk != Robot::Walk::kDestination) r.walk = Robot::Walk::kIdle;  // stay committed
     r.bridge_at = -1.0;
     r.got_paths.clear();
     r.path_deadline = -1.0;
@@ -679,41 +722,89 @@ class Runner {
     const double my_d = distance(r.pos, sc_.destination);
     for (RobotId n : radio_.neighbours(r.id))
       if (distance(robots_[n.value].pos, sc_.destination) < my_d) frontier = false;
-    if (frontier) {
-      if (r.walk == Robot::Walk::kDestination) return;  // keep walking
-      if (plan_walk(r, sc_.destination)) {
+    // The source also walks toward the destination itself from its second attempt on (as the
+    // centralized source does), while it keeps searching.
+    const bool source_walks = is_source(r) && res_.metrics.search_attempts >= 2;
+    if (frontier || source_walks || r.walk == Robot::Walk::kDestination) {
+      bool walking = r.walk == Robot::Walk::kDestination;
+      if (!walking && plan_walk(r, sc_.destination)) {
         NS_DEBUG("  robot %u walks to destination\n", r.id.value);
         r.walk = Robot::Walk::kDestination;
         r.walk_since_check = 0.0;
-        return;
+        walking = true;
       }
+      if (walking && !is_source(r)) return;
     }
-    r.walk = Robot::Walk::kIdle;
-    r.waypoints.clear();
-    r.s_done = true;
+    if (!is_source(r) || r.walk != Robot::Walk::kDestination) {
+      r.walk = Robot::Walk::kIdle;
+      r.waypoints.clear();
+      r.s_done = true;
+    }
+    forward_search(r, hops);
+  }
+
+  /// Table 2 line 8-9: add oneself to Relay Robots and send the Search with one's open points.
+  void forward_search(Robot& r, std::uint8_t hops) {
     if (hops + 1 >= o_.hop_limit) return;
     SearchMessage out;
     out.source = r.s_in.source;
     out.num = r.s_in.num;
     out.destination = r.s_in.destination;
-    out.relays = r.s_in.relays;
-    out.relays.push_back(r.id);
+    double best = kInf;
+    std::size_t best_i = 0;
     for (std::size_t i : r.s_sent) {
       VoronoiPoint p = r.s_comb[i];
-      p.cost = static_cast<float>(r.s_search.cost[i]);
+      const double c = r.s_search.cost[i];
+      p.cost = static_cast<float>(std::isfinite(c) ? c : kUnreached);
       out.open_points.push_back(p);
+      if (c < best) {
+        best = c;
+        best_i = i;
+      }
     }
+    out.relays = std::isfinite(best)
+                     ? r.s_senders[sender_of(r, trace_points(r.s_search, best_i).front())].relays
+                     : r.s_senders.front().relays;
+    out.relays.push_back(r.id);
     out.close_points = points(r).close;
     broadcast(r, out, static_cast<std::uint8_t>(hops + 1));
+  }
+
+  /// Which sender a point of s_comb (index < s_na) came from.
+  static std::size_t sender_of(const Robot& r, std::size_t i) {
+    for (std::size_t k = 0; k < r.s_senders.size(); ++k)
+      if (i >= r.s_senders[k].offset && i < r.s_senders[k].offset + r.s_senders[k].count) return k;
+    return 0;
   }
 
   void walk_progress(Robot& r, bool arrived) {
     if (r.s_done) return;
     r.points_dirty = true;
-    if (is_source(r) && !r.s_in.open_points.empty()) {
+    if (is_source(r)) {
+      // Is the destination reachable from where the source stands now? (The search state of the
+      // broadcast Search is kept for the Path answers.)
+      const auto keep_in = r.s_in;
+      const auto keep_comb = r.s_comb;
+      const auto keep_search = r.s_search;
+      const auto keep_na = r.s_na;
+      const auto keep_sent = r.s_sent;
       const double cl = clearance_at(r.map.grid(), r.pos);
-      r.s_in.open_points[0] =
-          VoronoiPoint{r.pos, static_cast<float>(std::max(cl, o_.robot_radius_m + 0.05)), 0.0f};
+      r.s_in.open_points = {
+          VoronoiPoint{r.pos, static_cast<float>(std::max(cl, o_.robot_radius_m + 0.05)), 0.0f}};
+      if (try_continue(r) && dest_reached(r)) {
+        trail_ = {r.pos};
+        r.walk = Robot::Walk::kIdle;
+        r.waypoints.clear();
+        answer_path(r);
+        return;
+      }
+      r.s_in = keep_in;
+      r.s_comb = keep_comb;
+      r.s_search = keep_search;
+      r.s_na = keep_na;
+      r.s_sent = keep_sent;
+      if (arrived) r.walk = Robot::Walk::kIdle;
+      return;
     }
     const bool cont = try_continue(r);
     NS_DEBUG("t=%.1f robot %u walk check cont=%d dest=%d arrived=%d dcl=%.2f\n", now_, r.id.value,
@@ -743,7 +834,12 @@ class Runner {
 
   /// The chain of s_comb indices ending at `last`, split into the sender's exit point and r's
   /// piece.
-  std::pair<std::uint32_t, std::vector<VoronoiPoint>> own_piece(const Robot& r, std::size_t last) {
+  struct Piece {
+    std::size_t sender = 0;  // index into s_senders
+    std::uint32_t exit = 0;  // index into that sender's points
+    std::vector<VoronoiPoint> points;
+  };
+  Piece own_piece(const Robot& r, std::size_t last) {
     const auto chain = trace_points(r.s_search, last);
     std::uint32_t exit = 0;
     std::vector<VoronoiPoint> piece;
@@ -757,24 +853,25 @@ class Runner {
         piece.push_back(p);
       }
     }
-    return {exit, piece};
+    const std::size_t k = sender_of(r, exit);
+    return {k, static_cast<std::uint32_t>(exit - r.s_senders[k].offset), piece};
   }
 
   void answer_path(Robot& r) {
     NS_DEBUG("t=%.1f robot %u answers path\n", now_, r.id.value);
-    auto [exit, piece] = own_piece(r, r.s_comb.size() - 1);
+    auto pc = own_piece(r, r.s_comb.size() - 1);
     PathMessage p;
     p.source = r.s_in.source;
     p.num = r.s_in.num;
-    p.relays = r.s_in.relays;
-    p.whole_path = piece;
-    p.exit_index = exit;
+    p.relays = r.s_senders[pc.sender].relays;
+    p.whole_path = pc.points;
+    p.exit_index = pc.exit;
     if (is_source(r)) {
       finish_route(r, p);
       return;
     }
     r.saved = p;
-    send_reliable(r, r.s_sender, p);
+    send_reliable(r, r.s_senders[pc.sender].id, p);
   }
 
   // ---- decentralized: Path (Table 3) --------------------------------------------------------
@@ -800,6 +897,7 @@ class Runner {
     for (std::size_t k = 0; k < r.got_paths.size(); ++k) {
       const auto& p = r.got_paths[k];
       const std::size_t ci = r.s_sent[p.exit_index];
+      if (!std::isfinite(r.s_search.cost[ci])) continue;
       double c = r.s_search.cost[ci] + route_length(p.whole_path);
       if (!p.whole_path.empty())
         c += distance(r.s_comb[ci].position, p.whole_path.front().position);
@@ -808,20 +906,24 @@ class Runner {
         bi = k;
       }
     }
+    if (!std::isfinite(best)) {
+      r.got_paths.clear();
+      return;
+    }
     const PathMessage got = r.got_paths[bi];
     r.got_paths.clear();
-    auto [exit, piece] = own_piece(r, r.s_sent[got.exit_index]);
+    auto pc = own_piece(r, r.s_sent[got.exit_index]);
     PathMessage out = got;
-    out.whole_path = piece;
+    out.whole_path = pc.points;  // add the path to the sender (own piece) to the whole path
     out.whole_path.insert(out.whole_path.end(), got.whole_path.begin(), got.whole_path.end());
-    out.exit_index = exit;
+    out.exit_index = pc.exit;
     if (is_source(r)) {
       finish_route(r, out);
       return;
     }
-    if (!out.relays.empty() && out.relays.back() == r.id) out.relays.pop_back();  // delete oneself
+    out.relays = r.s_senders[pc.sender].relays;  // delete oneself: continue toward the source
     r.saved = out;
-    if (!out.relays.empty()) send_reliable(r, out.relays.back(), out);
+    send_reliable(r, r.s_senders[pc.sender].id, out);
   }
 
   void finish_route(Robot& s, const PathMessage& p) {
@@ -830,17 +932,39 @@ class Runner {
     route_.clear();
     route_.push_back(VoronoiPoint{s.pos, 1.0f, 0.0f});
     route_.insert(route_.end(), p.whole_path.begin(), p.whole_path.end());
-    if (route_.back().position != sc_.destination)
+    if (distance(route_.back().position, sc_.destination) > 1e-3)
       route_.push_back(VoronoiPoint{sc_.destination, 1.0f, 0.0f});
     set_source_waypoints(0);
+    if (trail_.size() > 1) {
+      // The source walked since it sent this Search: go back along its own (known free) trail.
+      const auto back = std::vector<Vec2>(trail_.rbegin(), trail_.rend());
+      s.waypoints.insert(s.waypoints.begin(), back.begin(), back.end());
+      route_base_ = 0;
+      back_steps_ = back.size();
+    } else {
+      back_steps_ = 0;
+    }
     if (first_route_ < 0.0) {
       first_route_ = now_;
       res_.metrics.route_time_s = now_;
       res_.metrics.route_length_m = route_length(route_);
+      if (o_.record) {
+        for (auto& r : robots_) {
+          res_.recording.maps_at_route.push_back(r.map.grid());
+          res_.recording.open_points_at_route.push_back(points(r).open);
+        }
+      }
     }
   }
 
+  /// route_ index of the source's next waypoint (waypoints may start with a way back).
+  std::size_t next_route_index() {
+    const std::size_t wp = src().wp;
+    return route_base_ + (wp >= back_steps_ ? wp - back_steps_ : 0);
+  }
+
   void set_source_waypoints(std::size_t from) {
+    back_steps_ = 0;
     auto& s = src();
     s.waypoints.clear();
     for (std::size_t i = from; i < route_.size(); ++i)
@@ -980,7 +1104,7 @@ class Runner {
   void splice_route(const std::vector<VoronoiPoint>& whole) {
     if (whole.empty() || route_.empty()) return;
     auto& s = src();
-    const std::size_t done = route_base_ + s.wp;  // route_ index of the next waypoint
+    const std::size_t done = next_route_index();
     for (std::size_t i = route_.size(); i-- > 0;) {
       if (distance(route_[i].position, whole.front().position) < 1e-3) {
         if (i + 1 < done) break;  // already passed: the splice point is behind the source
@@ -990,6 +1114,7 @@ class Runner {
         route_ = std::move(n);
         set_source_waypoints(std::max<std::size_t>(done, 1) - 1);
         s.waypoints.insert(s.waypoints.begin(), s.pos);
+        back_steps_ = 1;
         blocked_since_ = -1.0;
         return;
       }
@@ -1001,7 +1126,7 @@ class Runner {
     if (route_.empty()) return;
     // Only the part within sensing range matters; find_break checks the remaining route.
     std::vector<VoronoiPoint> rest{VoronoiPoint{s.pos, 1.0f, 0.0f}};
-    const std::size_t next = route_base_ + s.wp;
+    const std::size_t next = next_route_index();
     rest.insert(rest.end(),
                 route_.begin() + static_cast<std::ptrdiff_t>(std::min(next, route_.size())),
                 route_.end());
@@ -1154,6 +1279,8 @@ class Runner {
   std::uint8_t search_hops_ = 0;
   std::vector<VoronoiPoint> route_;
   std::size_t route_base_ = 0;
+  std::vector<Vec2> trail_;     // source positions since its latest Search
+  std::size_t back_steps_ = 0;  // waypoints of the way back along the trail
   double blocked_since_ = -1.0;
   std::uint32_t repair_seq_ = 0;
   bool collecting_ = false;

@@ -59,7 +59,7 @@ struct NetSimOptions {
   double speed_mps = 1.0;        ///< seed 000: 1 m/s
   double robot_radius_m = 0.2;
   double dt_s = 0.2;            ///< simulation step [s]
-  double time_limit_s = 600.0;  ///< a run fails when the source has not arrived by then
+  double time_limit_s = 900.0;  ///< a run fails when the source has not arrived by then
   network::RadioOptions radio{};
   network::VoronoiPointsOptions points{};
   double path_wait_s = 0.5;  ///< Table 3 "wait for a little while" [s]
@@ -67,7 +67,7 @@ struct NetSimOptions {
   /// walks over to sense the gap itself [s].
   double bridge_wait_s = 2.0;
   double search_timeout_s = 60.0;  ///< source retries the Search with Num+1 after this [s]
-  int max_search_attempts = 12;
+  int max_search_attempts = 8;
   double link_timeout_s = 0.3;  ///< hop-by-hop retry after no LinkAck [s]
   int link_retries = 6;
   int hop_limit = 32;             ///< flood bound (hops) for Search, Request and Repair
@@ -98,6 +98,9 @@ struct Recording {
   std::vector<OccupancyGrid> final_local_maps;  ///< each robot's map at the end (window)
   std::vector<Vec2> route;                      ///< the source's final route [m]
   std::vector<std::vector<network::VoronoiPoint>> open_points;  ///< per robot, at the end
+  /// Each robot's map and open points when the source first had a route (decentralized).
+  std::vector<OccupancyGrid> maps_at_route;
+  std::vector<std::vector<network::VoronoiPoint>> open_points_at_route;
 };
 
 struct RobotMetrics {
