@@ -4,11 +4,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "command.hpp"
 #include "voronav/core/error.hpp"
+#include "voronav/render/plot.hpp"
 #include "voronav/sim/scenarios.hpp"
 
 namespace voronav::cli {
@@ -21,8 +23,49 @@ struct NetsimArgs {
   std::uint64_t seed = 1;
   double loss = 0.0;
   std::string out;
+  std::string plots;
   bool json = false;
 };
+
+/// Figures 22-37 style: one value per run of Table 7, both methods side by side.
+void save_plots(const std::string& dir, const std::string& scenario,
+                const std::map<std::string, std::vector<sim::NetSimMetrics>>& runs) {
+  std::filesystem::create_directories(dir);
+  struct Fig {
+    const char* file;
+    const char* title;
+    const char* unit;
+    double (*get)(const sim::NetSimMetrics&);
+  };
+  const Fig figs[] = {
+      {"traffic", "total traffic", "bytes",
+       [](const sim::NetSimMetrics& m) { return static_cast<double>(m.traffic_bytes); }},
+      {"computation", "total computation", "work units (cells + point pairs)",
+       [](const sim::NetSimMetrics& m) { return static_cast<double>(m.computation); }},
+      {"max_robot_cpu", "computation time of the busiest robot", "CPU s",
+       [](const sim::NetSimMetrics& m) { return m.max_robot_cpu_s; }},
+      {"travel", "travel distance of all robots", "m",
+       [](const sim::NetSimMetrics& m) { return m.travel_m; }}};
+  for (const auto& f : figs) {
+    render::Plot plot({.width_px = 640,
+                       .height_px = 360,
+                       .title = "Scenario " + scenario + ": " + f.title,
+                       .x_label = "run (Table 7)",
+                       .y_label = f.unit});
+    std::vector<std::string> cats;
+    std::size_t n = 0;
+    for (const auto& [name, v] : runs) n = std::max(n, v.size());
+    for (std::size_t i = 1; i <= n; ++i) cats.push_back(std::to_string(i));
+    plot.categories(cats);
+    int c = 0;
+    for (const auto& [name, v] : runs) {
+      std::vector<double> y;
+      for (const auto& m : v) y.push_back(f.get(m));
+      plot.bars(name, y, c++ == 0 ? render::colors::kBlue : render::colors::kOrange);
+    }
+    plot.save(std::filesystem::path(dir) / ("scenario" + scenario + "_" + f.file + ".png"));
+  }
+}
 
 nlohmann::json summary_json(const sim::Summary& s) {
   return {{"runs", s.runs},
@@ -62,6 +105,7 @@ void run(const NetsimArgs& a) {
   }
   nlohmann::json out = nlohmann::json::object();
   nlohmann::json per_run = nlohmann::json::array();
+  std::map<std::string, std::vector<sim::NetSimMetrics>> by_method;
   for (auto m : methods) {
     std::vector<sim::NetSimMetrics> all;
     for (int run = 1; run <= a.runs; ++run) {
@@ -85,6 +129,7 @@ void run(const NetsimArgs& a) {
                          {"travel_m", r.travel_m}});
     }
     out[std::string(sim::to_string(m))] = summary_json(sim::summarize(all));
+    by_method[std::string(sim::to_string(m))] = all;
   }
   if (!a.out.empty()) {
     std::filesystem::create_directories(a.out);
@@ -92,6 +137,7 @@ void run(const NetsimArgs& a) {
     if (!f) throw Error(a.out, 0, "cannot write the results");
     f << nlohmann::json{{"summary", out}, {"runs", per_run}}.dump(2) << "\n";
   }
+  if (!a.plots.empty()) save_plots(a.plots, a.scenario, by_method);
   if (a.json) {
     std::cout << out.dump(2) << "\n";
     return;
@@ -117,6 +163,7 @@ void setup(CLI::App& app) {
   c->add_option("--seed", args->seed, "world/placement seed");
   c->add_option("--loss", args->loss, "radio message loss probability");
   c->add_option("--out", args->out, "directory for per-run JSON");
+  c->add_option("--plots", args->plots, "directory for per-run bar charts (PNG)");
   c->add_flag("--json", args->json, "machine-readable output");
   c->callback([args] { run(*args); });
 }
