@@ -54,13 +54,16 @@ void save_plots(const std::string& dir, const std::string& scenario,
                        .y_label = f.unit});
     std::vector<std::string> cats;
     std::size_t n = 0;
-    for (const auto& [name, v] : runs) n = std::max(n, v.size());
-    for (std::size_t i = 1; i <= n; ++i) cats.push_back(std::to_string(i));
+    for (const auto& [name, v] : runs)
+      n = std::max(n, v.size());
+    for (std::size_t i = 1; i <= n; ++i)
+      cats.push_back(std::to_string(i));
     plot.categories(cats);
     int c = 0;
     for (const auto& [name, v] : runs) {
       std::vector<double> y;
-      for (const auto& m : v) y.push_back(f.get(m));
+      for (const auto& m : v)
+        y.push_back(f.get(m));
       plot.bars(name, y, c++ == 0 ? render::colors::kBlue : render::colors::kOrange);
     }
     plot.save(std::filesystem::path(dir) / ("scenario" + scenario + "_" + f.file + ".png"));

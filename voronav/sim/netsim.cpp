@@ -11,12 +11,8 @@
 #include "voronav/planning/astar.hpp"
 #include "voronav/sim/world.hpp"
 
-#include <cstdio>
-#include <cstdlib>
-#define NS_DEBUG(...)                                                   \
-  do {                                                                  \
-    if (std::getenv("NETSIM_DEBUG")) std::fprintf(stderr, __VA_ARGS__); \
-  } while (0)
+// Trace points of the protocol (compiled out; the library does no I/O).
+#define NS_DEBUG(...) ((void)0)
 
 namespace voronav::sim {
 
