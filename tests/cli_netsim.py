@@ -1,0 +1,55 @@
+#!/usr/bin/env python3
+"""End-to-end checks of `voronav netsim` (seed 000): JSON shape, both methods, errors."""
+import json
+import subprocess
+import sys
+import tempfile
+import os
+
+exe, root, case = sys.argv[1], sys.argv[2], sys.argv[3]
+
+
+def run(*args):
+    return subprocess.run([exe, "netsim", *args], capture_output=True, text=True, timeout=240)
+
+
+def check(cond, msg):
+    if not cond:
+        print("FAIL:", msg)
+        sys.exit(1)
+
+
+KEYS = ["traffic_bytes", "messages", "computation", "max_robot_computation", "route_time_s",
+        "travel_m", "success_rate", "runs"]
+
+if case == "both_json":
+    r = run("--scenario", "1", "--runs", "2", "--json")
+    check(r.returncode == 0, r.stderr)
+    j = json.loads(r.stdout)
+    check(set(j) == {"centralized", "decentralized"}, j.keys())
+    for m in j.values():
+        for k in KEYS:
+            check(k in m, k)
+        check(m["runs"] == 2, m)
+        check(m["success_rate"] == 1.0, m)
+        check(m["traffic_bytes"] > 0, m)
+    check(j["centralized"]["beta_bytes"] > j["centralized"]["alpha_bytes"], j)
+elif case == "one_method_plots":
+    with tempfile.TemporaryDirectory() as d:
+        r = run("--scenario", "3", "--runs", "1", "--method", "decentralized", "--json",
+                "--out", d, "--plots", d)
+        check(r.returncode == 0, r.stderr)
+        j = json.loads(r.stdout)
+        check(list(j) == ["decentralized"], j.keys())
+        check(os.path.exists(os.path.join(d, "netsim_scenario3.json")), os.listdir(d))
+        check(os.path.getsize(os.path.join(d, "scenario3_traffic.png")) > 1000, os.listdir(d))
+elif case == "errors":
+    for args in (["--scenario", "7"], ["--scenario", "x"], ["--method", "teleport"],
+                 ["--runs", "0"], ["--loss", "1.5", "--runs", "1"]):
+        r = run(*args)
+        check(r.returncode == 2, f"{args}: exit {r.returncode}")
+        check("error" in r.stderr.lower(), r.stderr)
+else:
+    print("unknown case", case)
+    sys.exit(2)
+print("ok")

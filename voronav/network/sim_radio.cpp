@@ -1,0 +1,154 @@
+#include "voronav/network/sim_radio.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "voronav/core/error.hpp"
+
+namespace voronav::network {
+
+void RadioOptions::validate() const {
+  auto nonneg = [](double v, const char* name) {
+    if (!(v >= 0.0) || !std::isfinite(v))
+      throw Error(std::string("radio.") + name, 0,
+                  "expected a finite number >= 0, got " + std::to_string(v));
+  };
+  auto prob = [](double v, const char* name) {
+    if (!(v >= 0.0 && v <= 1.0))
+      throw Error(std::string("radio.") + name, 0,
+                  "expected a probability in [0, 1], got " + std::to_string(v));
+  };
+  nonneg(range_m, "range_m");
+  nonneg(latency_s, "latency_s");
+  nonneg(jitter_s, "jitter_s");
+  nonneg(reorder_delay_s, "reorder_delay_s");
+  prob(loss, "loss");
+  prob(duplicate, "duplicate");
+  prob(reorder, "reorder");
+}
+
+SimRadio::SimRadio(RadioOptions options) : options_(options), rng_(options.seed) {
+  options_.validate();
+}
+
+void SimRadio::ensure(RobotId id) {
+  if (id == kBroadcast) throw Error("radio", 0, "kBroadcast is not a robot id");
+  if (id.value >= 1'000'000)
+    throw Error("radio", 0, "robot id too large: " + std::to_string(id.value));
+  const std::size_t n = static_cast<std::size_t>(id.value) + 1;
+  if (positions_.size() < n) {
+    positions_.resize(n);
+    known_.resize(n, 0);
+    inbox_.resize(n);
+    stats_.sent_by_robot.resize(n);
+    stats_.received_by_robot.resize(n);
+  }
+}
+
+void SimRadio::update_position(RobotId id, Vec2 position) {
+  if (!position.is_finite()) throw Error("radio", 0, "robot position must be finite");
+  ensure(id);
+  positions_[id.value] = position;
+  known_[id.value] = 1;
+}
+
+void SimRadio::set_time(double now_s) {
+  if (!std::isfinite(now_s)) throw Error("radio", 0, "time must be finite");
+  now_ = std::max(now_, now_s);
+}
+
+bool SimRadio::in_range(RobotId a, RobotId b) const {
+  if (a.value >= known_.size() || b.value >= known_.size()) return false;
+  if (!known_[a.value] || !known_[b.value]) return false;
+  return (positions_[a.value] - positions_[b.value]).squared_norm() <=
+         options_.range_m * options_.range_m;
+}
+
+std::vector<RobotId> SimRadio::neighbours(RobotId id) const {
+  std::vector<RobotId> out;
+  for (std::uint32_t i = 0; i < known_.size(); ++i)
+    if (i != id.value && in_range(id, RobotId{i})) out.push_back(RobotId{i});
+  return out;
+}
+
+void SimRadio::account(RobotId from, std::span<const std::uint8_t> bytes) {
+  ensure(from);
+  stats_.total.messages += 1;
+  stats_.total.bytes += bytes.size();
+  auto& t = stats_.by_type[peek_type(bytes)];
+  t.messages += 1;
+  t.bytes += bytes.size();
+  stats_.sent_by_robot[from.value].messages += 1;
+  stats_.sent_by_robot[from.value].bytes += bytes.size();
+}
+
+void SimRadio::deliver(RobotId from, RobotId to, RobotId addressed,
+                       std::span<const std::uint8_t> bytes) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  if (options_.loss > 0.0 && u(rng_) < options_.loss) {
+    ++stats_.lost;
+    return;
+  }
+  const int copies = (options_.duplicate > 0.0 && u(rng_) < options_.duplicate) ? 2 : 1;
+  if (copies == 2) ++stats_.duplicated;
+  for (int c = 0; c < copies; ++c) {
+    double at = now_ + options_.latency_s;
+    if (options_.jitter_s > 0.0) at += u(rng_) * options_.jitter_s;
+    if (options_.reorder > 0.0 && u(rng_) < options_.reorder) at += options_.reorder_delay_s;
+    Packet p{from, addressed, std::vector<std::uint8_t>(bytes.begin(), bytes.end()), now_};
+    inbox_[to.value].push_back(Pending{at, order_++, std::move(p)});
+    ++stats_.receptions;
+    stats_.received_by_robot[to.value].messages += 1;
+    stats_.received_by_robot[to.value].bytes += bytes.size();
+  }
+}
+
+void SimRadio::send(RobotId from, RobotId to, std::span<const std::uint8_t> bytes) {
+  ensure(from);
+  if (to == kBroadcast) {
+    broadcast(from, bytes);
+    return;
+  }
+  ensure(to);
+  account(from, bytes);
+  if (from == to || !in_range(from, to)) {
+    ++stats_.out_of_range;
+    return;
+  }
+  deliver(from, to, to, bytes);
+}
+
+void SimRadio::broadcast(RobotId from, std::span<const std::uint8_t> bytes) {
+  ensure(from);
+  account(from, bytes);
+  for (std::uint32_t i = 0; i < known_.size(); ++i)
+    if (i != from.value && in_range(from, RobotId{i})) deliver(from, RobotId{i}, kBroadcast, bytes);
+}
+
+std::vector<Packet> SimRadio::receive(RobotId self) {
+  std::vector<Packet> out;
+  if (self.value >= inbox_.size()) return out;
+  auto& box = inbox_[self.value];
+  if (box.empty()) return out;
+  std::vector<Pending> due, later;
+  for (auto& p : box)
+    (p.deliver_at <= now_ + 1e-12 ? due : later).push_back(std::move(p));
+  box = std::move(later);
+  std::sort(due.begin(), due.end(), [](const Pending& a, const Pending& b) {
+    return a.deliver_at != b.deliver_at ? a.deliver_at < b.deliver_at : a.order < b.order;
+  });
+  out.reserve(due.size());
+  for (auto& p : due)
+    out.push_back(std::move(p.packet));
+  return out;
+}
+
+std::size_t SimRadio::in_flight() const {
+  std::size_t n = 0;
+  for (const auto& b : inbox_)
+    n += b.size();
+  return n;
+}
+
+}  // namespace voronav::network

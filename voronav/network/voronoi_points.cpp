@@ -1,0 +1,209 @@
+#include "voronav/network/voronoi_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <queue>
+
+#include "voronav/core/error.hpp"
+#include "voronav/field/distance_transform.hpp"
+
+namespace voronav::network {
+
+namespace {
+
+BinaryGrid known_free_blocked(const OccupancyGrid& m) {
+  BinaryGrid b(m.geometry(), 1);
+  for (std::size_t i = 0; i < m.size(); ++i)
+    b[i] = (m[i] == kFree) ? 0 : 1;
+  return b;
+}
+
+}  // namespace
+
+VoronoiPoints make_voronoi_points(const OccupancyGrid& local_map,
+                                  const VoronoiPointsOptions& options) {
+  if (!(options.robot_radius_m >= 0.0) || !std::isfinite(options.robot_radius_m))
+    throw Error("voronoi_points.robot_radius_m", 0, "expected a finite number >= 0");
+  if (!(options.min_site_separation_cells >= 1.0) ||
+      !std::isfinite(options.min_site_separation_cells))
+    throw Error("voronoi_points.min_site_separation_cells", 0, "expected a finite number >= 1");
+  if (!(options.close_point_spacing_m > 0.0) || !std::isfinite(options.close_point_spacing_m))
+    throw Error("voronoi_points.close_point_spacing_m", 0, "expected a finite number > 0");
+  VoronoiPoints out;
+  if (local_map.empty()) return out;
+  const auto& g = local_map.geometry();
+  const double res = g.resolution;
+  const BinaryGrid blocked = known_free_blocked(local_map);
+  const field::DistanceField df = field::distance_transform(
+      blocked, field::DistanceTransformOptions{.border_is_blocked = true});
+  out.cells_processed = local_map.size() * 2;
+  const double sep2 = options.min_site_separation_cells * options.min_site_separation_cells;
+  auto site_cell = [&](std::int32_t s) { return g.cell_at(static_cast<std::size_t>(s)); };
+  auto clearance_of = [&](Cell c) {
+    const double d = std::sqrt(static_cast<double>(df.squared_distance[c]));
+    return std::max(0.0, (d - 0.5) * res);
+  };
+  struct Cand {
+    Cell cell;
+    double clearance;
+  };
+  std::vector<Cand> open_c, close_c;
+  for (int y = 0; y < g.height; ++y) {
+    for (int x = 0; x < g.width; ++x) {
+      const Cell c{x, y};
+      if (blocked[c]) continue;
+      const std::int32_t sc = df.nearest[c];
+      const Cell a = sc == field::kNoSite ? c : site_cell(sc);
+      bool ridge = false;
+      for (int k = 0; k < 4 && !ridge && sc != field::kNoSite; ++k) {
+        const Cell n = c + kNeighbours8[k];
+        // Sites beyond the border are not in the EDT's nearest map; the border acts only through
+        // distances, so compare neighbours inside the grid.
+        if (!g.contains(n) || blocked[n]) continue;
+        const std::int32_t sn = df.nearest[n];
+        if (sn == field::kNoSite || sn == sc) continue;
+        const Cell b = site_cell(sn);
+        const double dx = a.x - b.x, dy = a.y - b.y;
+        if (dx * dx + dy * dy >= sep2 && df.squared_distance[c] >= df.squared_distance[n])
+          ridge = true;
+      }
+      // A local maximum of the distance (e.g. the centre of a sensed disc whose nearest sites are
+      // all border cells) is on the diagram too.
+      if (!ridge) {
+        bool is_max = true;
+        for (Cell o : kNeighbours8) {
+          const Cell n = c + o;
+          if (g.contains(n) && df.squared_distance[n] > df.squared_distance[c]) {
+            is_max = false;
+            break;
+          }
+        }
+        ridge = is_max;
+      }
+      if (!ridge) continue;
+      const double cl = clearance_of(c);
+      (cl > options.robot_radius_m + res ? open_c : close_c).push_back({c, cl});
+    }
+  }
+  auto by_clearance = [](const Cand& a, const Cand& b) {
+    if (a.clearance != b.clearance) return a.clearance > b.clearance;
+    return a.cell < b.cell;
+  };
+  std::sort(open_c.begin(), open_c.end(), by_clearance);
+  for (const auto& c : open_c) {
+    const Vec2 p = g.cell_center(c.cell);
+    bool covered = false;
+    for (const auto& q : out.open) {
+      // s is covered when it continues q with one cell to spare: the next skeleton cell then
+      // still continues q or is selected itself, so the selected points stay chained.
+      const double cover = (static_cast<double>(q.clearance) - options.robot_radius_m) +
+                           (c.clearance - options.robot_radius_m) - res;
+      if (cover > 0.0 && (q.position - p).squared_norm() <= cover * cover) {
+        covered = true;
+        break;
+      }
+    }
+    if (!covered) out.open.push_back({p, static_cast<float>(c.clearance), 0.0f});
+  }
+  std::sort(close_c.begin(), close_c.end(), by_clearance);
+  const double sp2 = options.close_point_spacing_m * options.close_point_spacing_m;
+  for (const auto& c : close_c) {
+    const Vec2 p = g.cell_center(c.cell);
+    bool covered = false;
+    for (Vec2 q : out.close)
+      if ((q - p).squared_norm() < sp2) {
+        covered = true;
+        break;
+      }
+    if (!covered) out.close.push_back(p);
+  }
+  out.cells_processed += open_c.size() * (out.open.size() + 1) + close_c.size();
+  return out;
+}
+
+double clearance_at(const OccupancyGrid& local_map, Vec2 world) {
+  const auto cell = local_map.geometry().world_to_cell(world);
+  if (!cell || !local_map.contains(*cell) || local_map[*cell] != kFree) return 0.0;
+  // Nearest blocked-or-unknown cell by an expanding square search (maps are small).
+  const auto& g = local_map.geometry();
+  double best2 = std::numeric_limits<double>::infinity();
+  const int maxr = std::max(g.width, g.height);
+  for (int r = 1; r <= maxr; ++r) {
+    if (static_cast<double>(r - 1) * (r - 1) > best2) break;
+    for (int dy = -r; dy <= r; ++dy) {
+      for (int dx = -r; dx <= r; ++dx) {
+        if (std::max(std::abs(dx), std::abs(dy)) != r) continue;
+        const Cell n{cell->x + dx, cell->y + dy};
+        if (!g.contains(n) || local_map[n] != kFree)
+          best2 = std::min(best2, static_cast<double>(dx * dx + dy * dy));
+      }
+    }
+  }
+  return std::max(0.0, (std::sqrt(best2) - 0.5) * g.resolution);
+}
+
+bool continues(const VoronoiPoint& p, const VoronoiPoint& q, double r) {
+  const double a = static_cast<double>(p.clearance) - r;
+  const double b = static_cast<double>(q.clearance) - r;
+  if (a <= 0.0 || b <= 0.0) return false;
+  return distance(p.position, q.position) <= a + b;
+}
+
+PointSearch search_points(std::span<const VoronoiPoint> points, std::span<const double> start_cost,
+                          double robot_radius_m, const ExtraEdge& extra_edge) {
+  if (start_cost.size() != points.size())
+    throw Error("search_points", 0, "start_cost must have one entry per point");
+  const std::size_t n = points.size();
+  PointSearch s;
+  s.cost.assign(n, std::numeric_limits<double>::infinity());
+  s.parent.assign(n, -1);
+  using Item = std::pair<double, std::size_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  for (std::size_t i = 0; i < n; ++i)
+    if (std::isfinite(start_cost[i])) {
+      s.cost[i] = start_cost[i];
+      open.push({start_cost[i], i});
+    }
+  std::vector<std::uint8_t> done(n, 0);
+  while (!open.empty()) {
+    const auto [c, i] = open.top();
+    open.pop();
+    if (done[i]) continue;
+    done[i] = 1;
+    for (std::size_t j = 0; j < n; ++j) {
+      ++s.work;
+      if (done[j]) continue;
+      if (!continues(points[i], points[j], robot_radius_m) && !(extra_edge && extra_edge(i, j)))
+        continue;
+      const double nc = c + distance(points[i].position, points[j].position);
+      if (nc < s.cost[j]) {
+        s.cost[j] = nc;
+        s.parent[j] = static_cast<std::int32_t>(i);
+        open.push({nc, j});
+      }
+    }
+  }
+  return s;
+}
+
+std::vector<std::size_t> trace_points(const PointSearch& s, std::size_t last) {
+  std::vector<std::size_t> chain;
+  for (std::int32_t i = static_cast<std::int32_t>(last); i >= 0;
+       i = s.parent[static_cast<std::size_t>(i)]) {
+    chain.push_back(static_cast<std::size_t>(i));
+    if (chain.size() > s.parent.size()) break;  // defensive: parents form a tree
+  }
+  std::reverse(chain.begin(), chain.end());
+  return chain;
+}
+
+double route_length(std::span<const VoronoiPoint> route) {
+  double len = 0.0;
+  for (std::size_t i = 1; i < route.size(); ++i)
+    len += distance(route[i - 1].position, route[i].position);
+  return len;
+}
+
+}  // namespace voronav::network

@@ -1,0 +1,148 @@
+// The networked-robot simulation of seed 000: robots with 3 m exact sensing and a 25 m simulated
+// radio find a route for the source robot to a destination, by
+//  - the decentralized method (Tables 1–5): Search messages carry the sender's open Voronoi
+//    points and are forwarded only by robots whose open points continue them (relays that cannot
+//    continue but are closer to the destination walk over and sense the gap, figure 18); the robot
+//    whose area holds the destination answers with a Path message that travels back through the
+//    relays, each waiting a little, selecting the shortest, saving it and prepending its own
+//    piece (Table 3); a relay that senses a break sends Repair to its neighbours, any of which
+//    that knows a detour answers (Tables 4–5). Added for a real network: hop-by-hop LinkAck
+//    retries, source retries with a new Num after a timeout, duplicate suppression, a hop bound.
+//  - the centralized baseline: the source floods a Request, every robot answers with an Ack
+//    holding its whole local map (routed back hop by hop), the source plans A* over the merged
+//    map with unknown = free, walks and senses by itself, replans on what it sees; a robot that
+//    sees its map change tells the source (Notify), which requests all maps again and replans.
+// Metrics follow eq. 1–9: traffic (bytes, messages; α, β, γ measured as mean sizes), computation
+// (work units = cells + point pairs processed, and CPU time; total and max per robot), time until
+// the source has a route, travel distance of all robots, success.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "voronav/core/occupancy.hpp"
+#include "voronav/network/messages.hpp"
+#include "voronav/network/sim_radio.hpp"
+#include "voronav/network/voronoi_points.hpp"
+
+namespace voronav::sim {
+
+enum class Method { kCentralized, kDecentralized };
+[[nodiscard]] std::string_view to_string(Method m);
+/// "centralized" / "decentralized"; throws voronav::Error otherwise.
+[[nodiscard]] Method parse_method(std::string_view s);
+
+/// An obstacle change (Table 7): `cells` become `value` `after_route_s` seconds after the source
+/// first has a route (so it happens while the route is in use).
+struct ObstacleChange {
+  double after_route_s = 0.0;
+  std::vector<Cell> cells;
+  std::int8_t value = kOccupied;
+};
+
+struct NetSimScenario {
+  OccupancyGrid world;       ///< ground truth (kFree / kOccupied)
+  std::vector<Vec2> robots;  ///< initial positions [m]; robots[source] is the source
+  std::size_t source = 0;
+  Vec2 destination;  ///< [m]
+  std::vector<ObstacleChange> changes;
+  /// Throws voronav::Error when robots/destination are off the map or in obstacles, etc.
+  void validate() const;
+};
+
+struct NetSimOptions {
+  Method method = Method::kDecentralized;
+  double sensing_range_m = 3.0;  ///< seed 000: ultrasonic range
+  double speed_mps = 1.0;        ///< seed 000: 1 m/s
+  double robot_radius_m = 0.2;
+  double dt_s = 0.2;            ///< simulation step [s]
+  double time_limit_s = 900.0;  ///< a run fails when the source has not arrived by then
+  network::RadioOptions radio{};
+  network::VoronoiPointsOptions points{};
+  double path_wait_s = 0.5;  ///< Table 3 "wait for a little while" [s]
+  /// A robot that cannot continue a Search waits this long for one it can continue before it
+  /// walks over to sense the gap itself [s].
+  double bridge_wait_s = 2.0;
+  double search_timeout_s = 60.0;  ///< source retries the Search with Num+1 after this [s]
+  int max_search_attempts = 8;
+  double link_timeout_s = 0.3;  ///< hop-by-hop retry after no LinkAck [s]
+  int link_retries = 6;
+  int hop_limit = 32;             ///< flood bound (hops) for Search, Request and Repair
+  int repair_hops = 2;            ///< Repair reaches neighbours up to this many hops
+  double collect_s = 1.5;         ///< centralized: wait this long without new Ack before planning
+  double repair_timeout_s = 8.0;  ///< decentralized: source re-searches when blocked this long
+  bool record = false;            ///< keep a Recording of every step
+  std::uint64_t seed = 1;
+  void validate() const;
+};
+
+/// One recorded step (for the replay viewer and pictures).
+struct RecordedMessage {
+  double t_s = 0.0;
+  std::uint32_t from = 0;
+  std::uint32_t to = 0;  ///< network::kBroadcast.value for broadcasts
+  network::MessageType type{};
+  std::size_t bytes = 0;
+};
+struct RecordedStep {
+  double t_s = 0.0;
+  std::vector<Vec2> positions;
+};
+struct Recording {
+  GridGeometry world;
+  std::vector<RecordedStep> steps;
+  std::vector<RecordedMessage> messages;
+  std::vector<OccupancyGrid> final_local_maps;  ///< each robot's map at the end (window)
+  std::vector<Vec2> route;                      ///< the source's final route [m]
+  std::vector<std::vector<network::VoronoiPoint>> open_points;  ///< per robot, at the end
+  /// Each robot's map and open points when the source first had a route (decentralized).
+  std::vector<OccupancyGrid> maps_at_route;
+  std::vector<std::vector<network::VoronoiPoint>> open_points_at_route;
+};
+
+struct RobotMetrics {
+  std::uint64_t work = 0;  ///< cells + point pairs processed
+  double cpu_s = 0.0;
+  double travel_m = 0.0;
+  std::uint64_t sent_bytes = 0;
+  std::uint64_t sent_messages = 0;
+};
+
+struct NetSimMetrics {
+  bool success = false;
+  double route_time_s = -1.0;    ///< first time the source has a route (-1 never)
+  double arrival_time_s = -1.0;  ///< when the source reached the destination (-1 never)
+  double travel_m = 0.0;         ///< eq. 3: sum over robots
+  double source_travel_m = 0.0;
+  double route_length_m = 0.0;  ///< eq. 2 length of the first route
+  std::uint64_t traffic_bytes = 0;
+  std::uint64_t messages = 0;
+  std::uint64_t computation = 0;  ///< eq. 8/9: total work units
+  std::uint64_t max_robot_computation = 0;
+  double cpu_s = 0.0;
+  double max_robot_cpu_s = 0.0;
+  std::map<std::string, network::TrafficCounter> by_type;  ///< per message type
+  double alpha_bytes = 0.0;  ///< mean Request (centralized) / Search (decentralized) size
+  double beta_bytes = 0.0;   ///< mean centralized Ack size
+  double gamma_bytes = 0.0;  ///< mean decentralized answer (Path) size
+  int search_attempts = 0;
+  int repairs = 0;  ///< breaks handled (decentralized Repair / centralized re-request)
+  int replans = 0;  ///< centralized A* plans
+  std::uint64_t corrupt_packets = 0;
+  double simulated_s = 0.0;
+  double wall_s = 0.0;
+  std::vector<RobotMetrics> robots;
+};
+
+struct NetSimResult {
+  NetSimMetrics metrics;
+  Recording recording;  ///< filled when options.record
+};
+
+/// Runs one scenario with one method. Deterministic for given scenario and options.
+[[nodiscard]] NetSimResult run_netsim(const NetSimScenario& scenario, const NetSimOptions& options);
+
+}  // namespace voronav::sim

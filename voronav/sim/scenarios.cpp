@@ -1,0 +1,168 @@
+#include "voronav/sim/scenarios.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "voronav/core/error.hpp"
+#include "voronav/field/distance_transform.hpp"
+#include "voronav/planning/astar.hpp"
+#include "voronav/planning/grid_planner.hpp"
+
+namespace voronav::sim {
+
+PaperScenario paper_scenario(int id) {
+  switch (id) {
+    case 1:
+      return {1, 6, 40.0};
+    case 2:
+      return {2, 6, 80.0};
+    case 3:
+      return {3, 12, 40.0};
+    case 4:
+      return {4, 12, 80.0};
+    default:
+      throw Error("scenario", 0, "expected 1, 2, 3 or 4, got " + std::to_string(id));
+  }
+}
+
+namespace {
+
+planning::PlanResult truth_plan(const BinaryGrid& pg, Cell a, Cell b) {
+  planning::AStarPlanner planner;
+  return planner.plan(pg, a, b);
+}
+
+}  // namespace
+
+NetSimScenario place_robots(const OfficeWorld& world, const PlacementOptions& o) {
+  if (o.robots < 1 || o.robots > 100000)
+    throw Error("placement.robots", 0, "expected 1..100000 robots");
+  if (o.changes < 0 || o.changes > 16)
+    throw Error("placement.changes", 0, "expected 0..16 changes");
+  NetSimScenario sc;
+  sc.world = world.grid;
+  const auto& g = world.grid.geometry();
+  const BinaryGrid blocked = binarize(world.grid);
+  const BinaryGrid pg = planning::make_planning_grid(blocked, o.robot_radius_m + 0.1);
+  std::mt19937_64 rng(o.seed);
+  std::vector<Cell> free_cells;
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x)
+      if (!pg[Cell{x, y}]) free_cells.push_back({x, y});
+  if (free_cells.empty()) throw Error("placement", 0, "the world has no free space");
+  std::vector<Cell> vor = voronoi_cells(blocked, o.robot_radius_m + 0.3);
+  std::erase_if(vor, [&](Cell c) { return pg[c] != 0; });
+  if (vor.empty()) vor = free_cells;
+  auto pick = [&](const std::vector<Cell>& v) {
+    std::uniform_int_distribution<std::size_t> d(0, v.size() - 1);
+    return v[d(rng)];
+  };
+  // Source at random; destination: the farthest reachable of 48 random candidates.
+  Cell s = pick(free_cells);
+  Cell dest = s;
+  double best = -1.0;
+  const double min_d = 0.3 * std::min(g.width, g.height);
+  for (int k = 0; k < 400 && (k < 48 || best < min_d); ++k) {
+    if (k % 48 == 47 && best < min_d) s = pick(free_cells);  // enclosed source: pick another
+    const Cell c = pick(free_cells);
+    const double d = std::hypot(c.x - s.x, c.y - s.y);
+    if (d > best && truth_plan(pg, s, c).ok()) {
+      best = d;
+      dest = c;
+    }
+  }
+  sc.robots.push_back(g.cell_center(s));
+  for (int i = 1; i < o.robots; ++i)
+    sc.robots.push_back(g.cell_center(pick(i % 2 == 1 ? vor : free_cells)));
+  sc.source = 0;
+  sc.destination = g.cell_center(dest);
+  // Obstacle changes: close doors on the true shortest route, ahead of the source.
+  if (o.changes > 0) {
+    auto plan = truth_plan(pg, s, dest);
+    BinaryGrid changed = blocked;
+    int made = 0;
+    for (std::size_t i = 0; i < plan.path.size() && made < o.changes; ++i) {
+      const Vec2 w = g.cell_center(plan.path[i]);
+      if (distance(w, g.cell_center(s)) < 6.0) continue;
+      for (const auto& d : world.doors) {
+        if (distance(d.centre, w) > 0.6) continue;
+        bool used = false;
+        for (const auto& ch : sc.changes)
+          used |= ch.cells == d.cells;
+        if (used) continue;
+        BinaryGrid trial = changed;
+        for (Cell c : d.cells)
+          trial[c] = 1;
+        if (!truth_plan(planning::make_planning_grid(trial, o.robot_radius_m + 0.1), s, dest).ok())
+          continue;
+        changed = std::move(trial);
+        ++made;
+        sc.changes.push_back({o.change_every_s * made, d.cells, kOccupied});
+        break;
+      }
+    }
+  }
+  return sc;
+}
+
+NetSimScenario make_paper_run(int id, int run, std::uint64_t seed) {
+  const auto ps = paper_scenario(id);
+  if (run < 1 || run > 16) throw Error("run", 0, "expected 1..16, got " + std::to_string(run));
+  OfficeWorldOptions wo;
+  wo.width_m = wo.height_m = ps.size_m;
+  wo.seed = seed * 1000 + static_cast<std::uint64_t>(id);
+  const auto world = make_office_world(wo);
+  PlacementOptions po;
+  po.robots = ps.robots;
+  po.changes = (run - 1) / 4;
+  po.seed = seed * 7919 + static_cast<std::uint64_t>(id * 16 + (run - 1) % 4);
+  return place_robots(world, po);
+}
+
+NetSimScenario make_scale_run(int robots, double size_m, std::uint64_t seed) {
+  OfficeWorldOptions wo;
+  wo.width_m = wo.height_m = size_m;
+  wo.seed = seed;
+  const auto world = make_office_world(wo);
+  PlacementOptions po;
+  po.robots = robots;
+  po.seed = seed * 31 + static_cast<std::uint64_t>(robots);
+  return place_robots(world, po);
+}
+
+Summary summarize(const std::vector<NetSimMetrics>& runs) {
+  Summary s;
+  s.runs = static_cast<int>(runs.size());
+  if (runs.empty()) return s;
+  int ok = 0;
+  for (const auto& m : runs) {
+    ok += m.success ? 1 : 0;
+    s.traffic_bytes += static_cast<double>(m.traffic_bytes);
+    s.messages += static_cast<double>(m.messages);
+    s.computation += static_cast<double>(m.computation);
+    s.max_robot_computation += static_cast<double>(m.max_robot_computation);
+    s.cpu_s += m.cpu_s;
+    s.max_robot_cpu_s += m.max_robot_cpu_s;
+    s.alpha_bytes += m.alpha_bytes;
+    s.beta_bytes += m.beta_bytes;
+    s.gamma_bytes += m.gamma_bytes;
+    if (m.success) {
+      s.route_time_s += m.route_time_s;
+      s.travel_m += m.travel_m;
+    }
+  }
+  const double n = static_cast<double>(runs.size());
+  s.success_rate = ok / n;
+  for (double* v : {&s.traffic_bytes, &s.messages, &s.computation, &s.max_robot_computation,
+                    &s.cpu_s, &s.max_robot_cpu_s, &s.alpha_bytes, &s.beta_bytes, &s.gamma_bytes})
+    *v /= n;
+  if (ok > 0) {
+    s.route_time_s /= ok;
+    s.travel_m /= ok;
+  }
+  return s;
+}
+
+}  // namespace voronav::sim

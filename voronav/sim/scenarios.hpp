@@ -1,0 +1,61 @@
+// The scenarios of seed 000, Table 6 (1: 6 robots 40x40 m, 2: 6 robots 80x80 m, 3: 12 robots
+// 40x40 m, 4: 12 robots 80x80 m) and the 16 runs of Table 7 (4 placements x (initial + 1, 2 or 3
+// obstacle changes)), built on generated office worlds. Half of the robots stand on the Voronoi
+// diagram of the map, half at random free places; robot 0 is the source; the destination is a far
+// reachable free place. Obstacle changes close doors on the ground-truth shortest route, ahead of
+// the source, keeping the destination reachable. Also the scale worlds (100 / 1000 robots).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "voronav/sim/netsim.hpp"
+#include "voronav/sim/world.hpp"
+
+namespace voronav::sim {
+
+struct PaperScenario {
+  int id = 1;
+  int robots = 6;
+  double size_m = 40.0;
+};
+
+/// Table 6; throws voronav::Error for an id outside 1..4.
+[[nodiscard]] PaperScenario paper_scenario(int id);
+
+struct PlacementOptions {
+  int robots = 6;
+  int changes = 0;              ///< obstacle changes (closed doors), 0..3 in Table 7
+  double change_every_s = 4.0;  ///< change k happens k * this after the route is found
+  double robot_radius_m = 0.2;
+  std::uint64_t seed = 1;
+};
+
+/// Places robots, source, destination and changes in an office world.
+[[nodiscard]] NetSimScenario place_robots(const OfficeWorld& world,
+                                          const PlacementOptions& options);
+
+/// Run `run` (1..16) of Table 7 for paper scenario `id`; `seed` varies the worlds.
+[[nodiscard]] NetSimScenario make_paper_run(int id, int run, std::uint64_t seed = 1);
+
+/// A square office world of side `size_m` with `robots` robots (the scale runs).
+[[nodiscard]] NetSimScenario make_scale_run(int robots, double size_m, std::uint64_t seed = 1);
+
+/// Mean of the metrics of several runs (success_rate = fraction of successes; route_time_s and
+/// travel over successful runs).
+struct Summary {
+  int runs = 0;
+  double success_rate = 0.0;
+  double traffic_bytes = 0.0;
+  double messages = 0.0;
+  double computation = 0.0;
+  double max_robot_computation = 0.0;
+  double cpu_s = 0.0;
+  double max_robot_cpu_s = 0.0;
+  double route_time_s = 0.0;
+  double travel_m = 0.0;
+  double alpha_bytes = 0.0, beta_bytes = 0.0, gamma_bytes = 0.0;
+};
+[[nodiscard]] Summary summarize(const std::vector<NetSimMetrics>& runs);
+
+}  // namespace voronav::sim
