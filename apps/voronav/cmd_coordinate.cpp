@@ -11,12 +11,14 @@
 
 #include "cli_common.hpp"
 #include "command.hpp"
+#include "recordings.hpp"
 #include "voronav/coordination/coordinator.hpp"
 #include "voronav/coordination/scenario.hpp"
 #include "voronav/coordination/schedule_io.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/render/figure.hpp"
 #include "voronav/render/plot.hpp"
+#include "voronav/report/replay_html.hpp"
 
 namespace voronav::cli {
 namespace {
@@ -218,6 +220,9 @@ void run(const CoordArgs& a) {
     if (ok) {
       draw_network(co::build_network(agents, opt.map), r, agents, a.out / "network.png");
       draw_collision_map(agents, r, opt.map, a.out / "collision_map.png");
+      if (sc.map)
+        report::write_replay_html(coordination_recording(sc.map->grid, agents, r),
+                                  (a.out / "index.html").string());
     }
   }
   if (a.json) {

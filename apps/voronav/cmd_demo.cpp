@@ -1,38 +1,78 @@
-// voronav demo: the README's first command. Runs the project's main capabilities on bundled real
-// maps and writes pictures and summary.json into an output folder whose path it prints.
+// voronav demo: the README's first command. On a bundled real floor plan, in one run: build an
+// occupancy map from a simulated laser sweep (seed 003), its Voronoi diagram and topological map,
+// plan with A*, Dijkstra and the topological planner, coordinate a team with collision maps
+// (seed 002), and check the grid planners on a Moving AI benchmark. Writes pictures of each
+// stage, summary.json and a replay page (index.html) into an output folder and prints its path.
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <random>
 
 #include "cli_common.hpp"
 #include "command.hpp"
 #include "plan_picture.hpp"
+#include "recordings.hpp"
+#include "topo_pictures.hpp"
+#include "voronav/coordination/coordinator.hpp"
+#include "voronav/coordination/scenario.hpp"
+#include "voronav/field/distance_transform.hpp"
+#include "voronav/io/floorplan.hpp"
 #include "voronav/io/movingai.hpp"
-#include "voronav/io/ros_map.hpp"
+#include "voronav/mapping/sweep.hpp"
 #include "voronav/planning/astar.hpp"
 #include "voronav/planning/bfs.hpp"
 #include "voronav/planning/planner_factory.hpp"
+#include "voronav/render/figure.hpp"
+#include "voronav/report/replay_html.hpp"
+#include "voronav/topology/topo_planner.hpp"
 
 namespace voronav::cli {
 namespace {
 
 namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
 
 struct DemoArgs {
   fs::path out = "demo-out";
   fs::path data;
+  std::string floorplan = "lab_ipa";
+  int robots = 5;
+  std::uint64_t seed = 1;
   bool json = false;
 };
 
-/// Two free cells far apart in the largest reachable area: BFS from any free cell to its farthest
-/// cell, then from there to the farthest again (a double sweep).
+/// Stage progress on stderr, only on a terminal and without --json (quiet in CI and pipes).
+class Progress {
+ public:
+  Progress(int stages, bool enabled) : stages_(stages), enabled_(enabled && ::isatty(2) != 0) {}
+  void begin(const std::string& what) {
+    ++stage_;
+    t0_ = Clock::now();
+    if (enabled_) std::fprintf(stderr, "[%d/%d] %s ...", stage_, stages_, what.c_str());
+  }
+  void end() {
+    if (enabled_)
+      std::fprintf(stderr, " %.1f s\n", std::chrono::duration<double>(Clock::now() - t0_).count());
+  }
+
+ private:
+  int stages_, stage_ = 0;
+  bool enabled_;
+  Clock::time_point t0_;
+};
+
+/// Two free cells far apart in the largest reachable area: BFS from the best-connected seed to
+/// its farthest cell, then from there to the farthest again (a double sweep).
 std::pair<Cell, Cell> far_apart_cells(const BinaryGrid& grid) {
   planning::BfsFlood bfs;
   Cell seed{-1, -1};
   std::size_t best_reach = 0;
-  // Try a few seeds on a coarse lattice and keep the one reaching the most cells.
   const int step = std::max(1, std::min(grid.width(), grid.height()) / 8);
   for (int y = step / 2; y < grid.height(); y += step)
     for (int x = step / 2; x < grid.width(); x += step)
@@ -61,100 +101,277 @@ std::pair<Cell, Cell> far_apart_cells(const BinaryGrid& grid) {
   return {a, farthest(a)};
 }
 
-nlohmann::json plan_stage(const fs::path& data, const fs::path& out) {
-  const fs::path yaml = data / "ros_maps" / "turtlebot3_world" / "map.yaml";
-  const OccupancyGrid map = io::load_ros_map(yaml);
-  const double radius = 0.105;  // TurtleBot3 Burger footprint radius [m]
-  const BinaryGrid grid = planning::make_planning_grid(binarize(map), radius);
-  const auto [start, goal] = far_apart_cells(grid);
-  nlohmann::json j{{"map", "data/ros_maps/turtlebot3_world/map.yaml"},
-                   {"size", {map.width(), map.height()}},
-                   {"resolution_m", map.resolution()},
-                   {"robot_radius_m", radius}};
-  for (auto kind : {planning::PlannerKind::kAStar, planning::PlannerKind::kDijkstra}) {
+struct Demo {
+  DemoArgs args;
+  fs::path data;
+  nlohmann::json summary;
+  OccupancyGrid truth_map;   ///< the floor plan (ground truth)
+  OccupancyGrid built_map;   ///< from the simulated sweep
+  BinaryGrid built_blocked;  ///< built map, unknown = blocked
+  topology::TopologicalMap topo;
+  std::vector<Vec2> astar_path;
+  report::Recording page;
+
+  void mapping_stage() {
+    truth_map = io::load_floorplan(data / "floorplans" / (args.floorplan + ".png"));
+    const BinaryGrid truth = binarize(truth_map);
+    mapping::SweepOptions o;
+    o.poses = 80;
+    o.seed = args.seed;
+    const auto sweep = mapping::simulate_sweep(truth, o);
+    built_map = sweep.map.threshold();
+    built_blocked = binarize(built_map);
+    render::Figure fig(truth_map.geometry(), {.title = "1. occupancy grid from a laser sweep (" +
+                                                       std::to_string(o.poses) + " poses)"});
+    fig.occupancy(sweep.map.to_occupancy_grid());
+    for (const Pose2& p : sweep.poses)
+      fig.point(p.position, render::colors::kOrange, 2.0);
+    fig.legend({{"sensor poses", render::colors::kOrange}});
+    fig.save(args.out / "1_occupancy_map.png");
+    summary["map"] = {{"floorplan", "data/floorplans/" + args.floorplan + ".png"},
+                      {"size_cells", {truth_map.width(), truth_map.height()}},
+                      {"resolution_m", truth_map.resolution()},
+                      {"sweep_poses", o.poses},
+                      {"observed_pct", 100.0 * sweep.agreement.observed},
+                      {"agreement_pct", 100.0 * sweep.agreement.agreement},
+                      {"picture", "1_occupancy_map.png"}};
+  }
+
+  void topology_stage() {
+    const auto t0 = Clock::now();
+    topo = topology::build_topological_map(built_blocked);
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    save_stages(built_map, built_blocked, topo, true, args.out / "2_topology");
+    std::size_t diagram_cells = 0;
+    for (auto v : topo.diagram.data())
+      diagram_cells += v != 0;
+    summary["topology"] = {{"voronoi_cells", diagram_cells},
+                           {"critical_points", topo.critical_points.size()},
+                           {"regions", topo.regions.size()},
+                           {"graph_edges", topo.edges.size()},
+                           {"time_ms", ms},
+                           {"pictures", "2_topology/a_binary.png .. f_graph.png"}};
+  }
+
+  void planning_stage() {
+    const double radius = 0.2;  // [m]
+    const BinaryGrid grid = planning::make_planning_grid(built_blocked, radius);
+    const auto [start, goal] = far_apart_cells(grid);
+    nlohmann::json j{
+        {"robot_radius_m", radius},
+        {"start_m",
+         {built_map.geometry().cell_center(start).x, built_map.geometry().cell_center(start).y}},
+        {"goal_m",
+         {built_map.geometry().cell_center(goal).x, built_map.geometry().cell_center(goal).y}}};
     planning::PlannerOptions opt;
     opt.robot_radius = radius;
     opt.record_expanded = true;
-    auto planner = planning::make_planner(kind, opt);
-    const auto r = planner->plan(grid, start, goal);
-    const std::string name(planner->name());
-    const fs::path png = out / ("plan_" + name + ".png");
-    save_plan_picture({map, grid, start, goal, &r, true}, png);
-    if (kind == planning::PlannerKind::kAStar)
-      save_plan_picture({map, grid, start, goal, &r, true}, out / "plan_astar.svg");
-    const Vec2 sw = map.geometry().cell_center(start), gw = map.geometry().cell_center(goal);
-    j[name] = {{"status", planning::to_string(r.status)},
-               {"start_m", {sw.x, sw.y}},
-               {"goal_m", {gw.x, gw.y}},
-               {"length_m", r.length_cells * map.resolution()},
-               {"expanded", r.expanded},
-               {"time_ms", r.time_ms},
-               {"picture", png.filename().string()}};
+    std::vector<std::unique_ptr<planning::GridPlanner>> planners;
+    planners.push_back(planning::make_planner(planning::PlannerKind::kAStar, opt));
+    planners.push_back(planning::make_planner(planning::PlannerKind::kDijkstra, opt));
+    planners.push_back(std::make_unique<topology::TopologicalPlanner>(opt));
+    for (auto& planner : planners) {
+      const std::string name(planner->name());
+      (void)planner->plan(grid, start, goal);  // warm-up: the first query sizes the buffers
+      const auto r = planner->plan(grid, start, goal);
+      const std::string file = "3_plan_" + name + ".png";
+      save_plan_picture({built_map, grid, start, goal, &r, true}, args.out / file);
+      j[name] = {{"status", planning::to_string(r.status)},
+                 {"length_m", r.length_cells * built_map.resolution()},
+                 {"expanded", r.expanded},
+                 {"time_ms", r.time_ms},
+                 {"picture", file}};
+      if (name == "astar" && r.ok())
+        for (Cell c : r.path)
+          astar_path.push_back(built_map.geometry().cell_center(c));
+    }
+    summary["plan"] = j;
   }
-  return j;
-}
 
-nlohmann::json scen_stage(const fs::path& data) {
-  const fs::path map_path = data / "movingai" / "arena.map";
-  const OccupancyGrid map = io::load_movingai_map(map_path);
-  const auto queries = io::load_movingai_scen(map_path.string() + ".scen");
-  const BinaryGrid grid = binarize(map);
-  planning::AStarPlanner astar;
-  std::size_t mismatches = 0, unsolved = 0;
-  double ms = 0;
-  for (const auto& q : queries) {
-    const auto r = astar.plan(grid, io::movingai_to_cell(q.start_x, q.start_y, map.height()),
-                              io::movingai_to_cell(q.goal_x, q.goal_y, map.height()));
-    ms += r.time_ms;
-    if (!r.ok())
-      ++unsolved;
-    else if (std::abs(r.length_cells - q.optimal_length) > 1e-4)
-      ++mismatches;
+  void coordination_stage() {
+    namespace co = coordination;
+    const double radius = 0.25;  // [m]
+    const BinaryGrid grid = planning::make_planning_grid(built_blocked, radius + 0.1);
+    // Starts and goals: random free cells of the largest connected area, at least 2 m apart.
+    planning::BfsFlood bfs;
+    const auto [a, b] = far_apart_cells(grid);
+    (void)b;
+    bfs.flood(grid, a, planning::Connectivity::k8);
+    std::vector<Cell> reachable;
+    for (std::size_t i = 0; i < grid.size(); ++i)
+      if (bfs.steps(grid, grid.cell_at(i)) >= 0) reachable.push_back(grid.cell_at(i));
+    std::mt19937_64 rng(args.seed);
+    std::uniform_int_distribution<std::size_t> pick(0, reachable.size() - 1);
+    std::vector<Vec2> taken;
+    auto draw = [&]() {
+      for (int tries = 0; tries < 10000; ++tries) {
+        const Vec2 p = built_map.geometry().cell_center(reachable[pick(rng)]);
+        bool ok = true;
+        for (const Vec2& q : taken)
+          ok = ok && distance(p, q) >= 2.0;
+        if (ok) {
+          taken.push_back(p);
+          return p;
+        }
+      }
+      throw Error("demo: cannot place the team's starts and goals 2 m apart");
+    };
+    co::Scenario sc;
+    sc.map = io::LoadedMap{built_map, io::MapFormat::kImage, "built map"};
+    for (int i = 0; i < args.robots; ++i) {
+      co::RobotSpec r;
+      r.id = i + 1;
+      r.start = draw();
+      r.goal = draw();
+      r.radius = radius;
+      r.limits = {0.5, 0.5};
+      sc.robots.push_back(r);
+    }
+    const auto planned = co::plan_agents(sc);
+    co::CoordinateOptions opt;
+    opt.search.ga.seed = args.seed;
+    const co::CoordinationResult r = co::coordinate(planned.agents, opt);
+    nlohmann::json agents = nlohmann::json::array();
+    for (std::size_t i = 0; i < planned.agents.size(); ++i)
+      agents.push_back({{"id", planned.agents[i].id},
+                        {"delay_s", r.delays[i]},
+                        {"arrival_s", r.arrivals.empty() ? 0.0 : r.arrivals[i]}});
+    render::Figure fig(built_map.geometry(),
+                       {.title = "4. coordinated team: paths and start delays"});
+    fig.occupancy(built_map);
+    for (std::size_t i = 0; i < planned.agents.size(); ++i) {
+      const auto& ag = planned.agents[i];
+      const auto c = render::palette(static_cast<int>(i));
+      fig.polyline(ag.path.nodes(), c, 2.5);
+      fig.circle(ag.path.nodes().front(), ag.radius, c.with_alpha(0.6), c);
+      fig.point(ag.path.nodes().back(), c, 4.0);
+      char label[64];
+      std::snprintf(label, sizeof label, "%d (delay %.1f s)", ag.id, r.delays[i]);
+      fig.text(ag.path.nodes().front(), label, render::colors::kBlack, 11.0);
+    }
+    fig.save(args.out / "4_coordination.png");
+    summary["coordination"] = {{"robots", planned.agents.size()},
+                               {"search", co::to_string(opt.search.kind)},
+                               {"status", co::to_string(r.status)},
+                               {"valid", r.valid},
+                               {"makespan_s", r.makespan},
+                               {"collision_boxes", r.boxes},
+                               {"time_ms", r.time_ms},
+                               {"agents", agents},
+                               {"picture", "4_coordination.png"}};
+    // The replay page shows this team on the map with the topology layers.
+    page = coordination_recording(built_map, planned.agents, r);
+    page.title = "voronav demo: " + args.floorplan + " floor plan";
+    page.description =
+        "Occupancy map built from a simulated laser sweep; its Voronoi diagram, topological "
+        "regions and graph (toggle them on the right); a team of " +
+        std::to_string(planned.agents.size()) +
+        " robots whose start delays come from collision maps (seed 002), so no two ever touch. "
+        "Press Play.";
+    add_topology_layers(page, topo);
+    if (!astar_path.empty())
+      page.paths.push_back({planned.agents.front().id, 0.0, "A* (demo query)", astar_path});
   }
-  return {{"map", "data/movingai/arena.map"},
-          {"queries", queries.size()},
-          {"mismatches", mismatches},
-          {"unsolved", unsolved},
-          {"mean_us", queries.empty() ? 0.0 : ms * 1000.0 / double(queries.size())}};
-}
+
+  void benchmark_stage() {
+    const fs::path map_path = data / "movingai" / "arena.map";
+    const OccupancyGrid map = io::load_movingai_map(map_path);
+    const auto queries = io::load_movingai_scen(map_path.string() + ".scen");
+    const BinaryGrid grid = binarize(map);
+    planning::AStarPlanner astar;
+    std::size_t mismatches = 0, unsolved = 0;
+    double ms = 0;
+    for (const auto& q : queries) {
+      const auto r = astar.plan(grid, io::movingai_to_cell(q.start_x, q.start_y, map.height()),
+                                io::movingai_to_cell(q.goal_x, q.goal_y, map.height()));
+      ms += r.time_ms;
+      if (!r.ok())
+        ++unsolved;
+      else if (std::abs(r.length_cells - q.optimal_length) > std::max(1e-4, q.optimal_rounding))
+        ++mismatches;
+    }
+    summary["movingai"] = {
+        {"map", "data/movingai/arena.map"},
+        {"queries", queries.size()},
+        {"mismatches", mismatches},
+        {"unsolved", unsolved},
+        {"mean_us", queries.empty() ? 0.0 : ms * 1000.0 / double(queries.size())}};
+  }
+};
 
 void run(const DemoArgs& a) {
-  const fs::path data = a.data.empty() ? bundled_data_dir() : a.data;
-  if (data.empty() || !fs::exists(data / "README.md"))
+  Demo d{a, a.data.empty() ? bundled_data_dir() : a.data, {}, {}, {}, {}, {}, {}, {}};
+  if (d.data.empty() || !fs::exists(d.data / "README.md"))
     throw Error("--data", 0, "bundled data folder not found; pass --data <repo>/data");
+  if (a.robots < 1 || a.robots > 20) throw Error("--robots", 0, "expected 1..20 robots");
   fs::create_directories(a.out);
-  const auto t0 = std::chrono::steady_clock::now();
-  nlohmann::json summary;
-  summary["plan"] = plan_stage(data, a.out);
-  summary["scen"] = scen_stage(data);
-  summary["total_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::ofstream(a.out / "summary.json") << summary.dump(2) << "\n";
+  const auto t0 = Clock::now();
+  Progress progress(5, !a.json);
+  progress.begin("occupancy map from a simulated laser sweep");
+  d.mapping_stage();
+  progress.end();
+  progress.begin("Voronoi diagram and topological map");
+  d.topology_stage();
+  progress.end();
+  progress.begin("planning: A*, Dijkstra, topological graph");
+  d.planning_stage();
+  progress.end();
+  progress.begin("coordinating a team with collision maps");
+  d.coordination_stage();
+  progress.end();
+  progress.begin("Moving AI benchmark check");
+  d.benchmark_stage();
+  progress.end();
+  report::write_replay_html(d.page, (a.out / "index.html").string());
+  d.summary["page"] = "index.html";
+  d.summary["total_s"] = std::chrono::duration<double>(Clock::now() - t0).count();
+  std::ofstream(a.out / "summary.json") << d.summary.dump(2) << "\n";
   const fs::path where = fs::absolute(a.out).lexically_normal();
   if (a.json) {
-    summary["out"] = where.string();
-    print_json(summary);
+    d.summary["out"] = where.string();
+    print_json(d.summary);
     return;
   }
-  const auto& p = summary["plan"];
-  std::cout << "voronav demo\n"
-            << "  plan on turtlebot3_world (" << p["size"][0] << "x" << p["size"][1]
-            << ", robot radius " << p["robot_radius_m"] << " m):\n"
-            << "    A*       length " << p["astar"]["length_m"] << " m, expanded "
-            << p["astar"]["expanded"] << ", " << p["astar"]["time_ms"] << " ms\n"
-            << "    Dijkstra length " << p["dijkstra"]["length_m"] << " m, expanded "
-            << p["dijkstra"]["expanded"] << ", " << p["dijkstra"]["time_ms"] << " ms\n"
-            << "  Moving AI arena: " << summary["scen"]["queries"] << " queries, "
-            << summary["scen"]["mismatches"] << " mismatches, " << summary["scen"]["unsolved"]
-            << " unsolved, " << summary["scen"]["mean_us"] << " us/query\n"
-            << "output: " << where.string() << "\n";
+  const auto& s = d.summary;
+  auto num = [](const nlohmann::json& v, int digits = 1) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v.get<double>());
+    return std::string(buf);
+  };
+  std::cout << "voronav demo on " << s["map"]["floorplan"].get<std::string>() << "\n"
+            << "  map:          " << num(s["map"]["agreement_pct"]) << " % of observed cells agree "
+            << "with the floor plan (" << num(s["map"]["observed_pct"]) << " % observed)\n"
+            << "  topology:     " << s["topology"]["regions"] << " regions, "
+            << s["topology"]["critical_points"] << " critical points, "
+            << num(s["topology"]["time_ms"], 0) << " ms\n"
+            << "  planning:     A* " << num(s["plan"]["astar"]["length_m"], 2) << " m ("
+            << s["plan"]["astar"]["expanded"] << " expanded), Dijkstra "
+            << num(s["plan"]["dijkstra"]["length_m"], 2) << " m ("
+            << s["plan"]["dijkstra"]["expanded"] << " expanded), topological graph "
+            << num(s["plan"]["topo"]["length_m"], 2) << " m\n"
+            << "  coordination: " << s["coordination"]["robots"] << " robots, makespan "
+            << num(s["coordination"]["makespan_s"]) << " s, valid "
+            << (s["coordination"]["valid"].get<bool>() ? "yes" : "no") << "\n"
+            << "  Moving AI:    " << s["movingai"]["queries"] << " queries on arena, "
+            << s["movingai"]["mismatches"] << " mismatches, " << s["movingai"]["unsolved"]
+            << " unsolved\n"
+            << "output: " << where.string() << " (open index.html in a browser)\n";
 }
 
 void setup(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "demo", "Run the main capabilities on bundled maps; writes pictures and summary.json");
+      "demo",
+      "Run the main capabilities on a bundled floor plan; pictures, summary.json, index.html");
   auto args = std::make_shared<DemoArgs>();
   cmd->add_option("--out", args->out, "Output folder")->capture_default_str();
   cmd->add_option("--data", args->data, "Bundled data folder (default: the source tree's data/)");
+  cmd->add_option("--floorplan", args->floorplan,
+                  "Floor plan of data/floorplans (e.g. lab_ipa, office_b, Freiburg52_scan)")
+      ->capture_default_str();
+  cmd->add_option("--robots", args->robots, "Team size for the coordination stage (1..20)")
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the sweep poses and the team")
+      ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print summary.json to stdout");
   cmd->callback([args] { run(*args); });
 }
