@@ -1,6 +1,7 @@
 #include "voronav/dds/dds_transport.hpp"
 
 #include <dds/dds.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -39,6 +40,15 @@ constexpr std::uint32_t kBroadcastId = network::kBroadcast.value;
 static_assert(voronav_dds_kBroadcastId == network::kBroadcast.value);
 
 using Guid = std::array<std::uint8_t, 16>;
+
+// The transport logs to stderr (stdout of a robot process carries its JSON report).
+std::shared_ptr<spdlog::logger> logger() {
+  static std::shared_ptr<spdlog::logger> l = [] {
+    if (auto existing = spdlog::get("voronav_dds")) return existing;
+    return spdlog::stderr_color_mt("voronav_dds");
+  }();
+  return l;
+}
 
 dds_duration_t to_ns(double seconds) {
   if (!(seconds > 0.0)) return 0;
@@ -281,7 +291,7 @@ struct DdsTransport::Impl {
     ++stats.rejected;
     const std::uint64_t n = ++stats.rejected_by_reason[i];
     if (n <= 10 || n % 1000 == 0)
-      spdlog::error("dds robot {}: rejected sample ({}): {} [{} so far]", options.self.value,
+      logger()->error("dds robot {}: rejected sample ({}): {} [{} so far]", options.self.value,
                     to_string(r), detail, n);
   }
 
