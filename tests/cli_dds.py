@@ -28,7 +28,7 @@ def check(cond, msg):
 
 
 def selftest(*args, expect=0):
-    p = run("dds-selftest", "--json", "--quiet", "0.5", *args, expect=expect)
+    p = run("dds-selftest", "--json", "--quiet", "1.0", *args, expect=expect)
     return json.loads(p.stdout)
 
 

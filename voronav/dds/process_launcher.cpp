@@ -79,6 +79,15 @@ bool ProcessGroup::running(std::size_t index) const {
   return index < children_.size() && children_[index].running;
 }
 
+const std::string& ProcessGroup::stdout_so_far(std::size_t index) const {
+  if (index >= children_.size()) throw Error("index", 0, "no such child");
+  return children_[index].result.stdout_text;
+}
+const std::string& ProcessGroup::stderr_so_far(std::size_t index) const {
+  if (index >= children_.size()) throw Error("index", 0, "no such child");
+  return children_[index].result.stderr_text;
+}
+
 std::size_t ProcessGroup::start(ChildSpec spec) {
   if (spec.argv.empty() || spec.argv[0].empty())
     throw Error("argv", 0, "expected the executable path as argv[0]");

@@ -73,6 +73,9 @@ class ProcessGroup {
   /// Sends SIGKILL to child `index` now (no effect once it has exited); result status kKilled.
   void kill(std::size_t index);
   [[nodiscard]] bool running(std::size_t index) const;
+  /// What child `index` wrote so far (e.g. to act on a progress line).
+  [[nodiscard]] const std::string& stdout_so_far(std::size_t index) const;
+  [[nodiscard]] const std::string& stderr_so_far(std::size_t index) const;
   [[nodiscard]] std::size_t size() const;
   /// Collects output and exits for at most `timeout_s` [s] (and never past the group deadline);
   /// returns true when no child is running any more.

@@ -206,7 +206,7 @@ SelftestOptions selftest_options(std::uint32_t n) {
   o.processes = n;
   o.echo_command = {self_executable(), "dds-echo"};
   o.timeout_s = 30.0;
-  o.quiet_s = 0.5;
+  o.quiet_s = 1.0;
   return o;
 }
 

@@ -374,13 +374,25 @@ SelftestReport run_selftest(const SelftestOptions& o) {
     spec.argv = command;
     for (auto& a : echo_args(ei)) spec.argv.push_back(std::move(a));
     spec.env["CYCLONEDDS_URI"] = cyclone_uri_for(config);
-    if (o.kill_id && *o.kill_id == i)
-      spec.kill_on_output = "voronav-dds-echo " + std::to_string(i) + ": round 1 sent";
     group.start(std::move(spec));
   }
+  // The victim is killed once every robot finished discovery (so that nobody waits for it) and
+  // the victim itself sent its first round: a robot dying mid-run.
+  auto kill_when_due = [&](ProcessGroup& g) {
+    if (!o.kill_id || !g.running(*o.kill_id)) return;
+    for (std::uint32_t i = 0; i < o.processes; ++i) {
+      const std::string& err = g.stderr_so_far(i);
+      const std::string me = "voronav-dds-echo " + std::to_string(i) + ": ";
+      if (err.find(me + "ready") == std::string::npos &&
+          err.find(me + "not all peers found") == std::string::npos && g.running(i))
+        return;
+    }
+    const std::string victim = "voronav-dds-echo " + std::to_string(*o.kill_id) + ": round 1 sent";
+    if (g.stderr_so_far(*o.kill_id).find(victim) != std::string::npos) g.kill(*o.kill_id);
+  };
   SelftestReport rep;
   rep.processes = o.processes;
-  rep.children = group.wait_all();
+  rep.children = group.wait_all(kill_when_due);
   rep.wall_s = now_s() - t0;
 
   auto violation = [&](std::string v) {
