@@ -23,9 +23,10 @@ struct CycloneConfigOptions {
   /// 0..119; 119 keeps every port of domain d inside 7400 + 250 d .. + 249.
   int max_auto_participant_index = 119;
   /// How long a silent participant stays known before its readers/writers are removed [s].
-  double lease_duration_s = 3.0;
+  /// Also how long a killed process stays matched (its receivers are waited for until then).
+  double lease_duration_s = 5.0;
   /// Participant announcement period [s] (Cyclone clamps it to the lease duration).
-  double spdp_interval_s = 0.5;
+  double spdp_interval_s = 1.0;
 };
 
 /// The <CycloneDDS> document for these options (applies to any domain id). Throws

@@ -524,7 +524,7 @@ bool DdsTransport::wait_for_peers(std::size_t count, double timeout_s) {
     const std::size_t r = subscription_matched(impl_->payload_reader);
     if (known >= count && w >= count && r >= count) return true;
     if (steady_seconds() >= deadline) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
 }
 
