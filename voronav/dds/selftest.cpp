@@ -205,8 +205,11 @@ std::string run_echo(const EchoOptions& o) {
   const bool ready =
       t.wait_for_peers(o.peers - 1, std::min(o.startup_timeout_s, std::max(0.0, deadline - now_s())));
   const double startup_s = now_s() - t0;
-  std::fprintf(stderr, "voronav-dds-echo %u: %s after %.3f s\n", o.id,
-               ready ? "ready" : "not all peers found", startup_s);
+  const std::size_t known_at_start = t.known_robots().size();
+  const std::size_t matched_at_start = t.matched_receivers();
+  std::fprintf(stderr, "voronav-dds-echo %u: %s after %.3f s (%zu poses, %zu receivers)\n", o.id,
+               ready ? "ready" : "not all peers found", startup_s, known_at_start,
+               matched_at_start);
 
   // What this robot should get from each in-range peer.
   std::map<std::uint32_t, std::pair<int, int>> expected;  // from -> (broadcasts, directed)
@@ -298,6 +301,8 @@ std::string run_echo(const EchoOptions& o) {
            {"peers", o.peers},
            {"ready", ready},
            {"startup_s", startup_s},
+           {"known_at_start", known_at_start},
+           {"matched_at_start", matched_at_start},
            {"sent_rounds", sent_rounds},
            {"flushed", flushed},
            {"received", rec},
@@ -477,6 +482,8 @@ SelftestReport run_selftest(const SelftestOptions& o) {
     if (reports.count(i) != 0) {
       const json& j = reports[i];
       cj["startup_s"] = j.value("startup_s", 0.0);
+      cj["known_at_start"] = j.value("known_at_start", 0);
+      cj["matched_at_start"] = j.value("matched_at_start", 0);
       cj["received_total"] = j.value("received_total", 0ULL);
       cj["complete"] = j.value("complete", false);
     }
