@@ -2,6 +2,7 @@
 // (issue #8). dds-echo is one participant (used by dds-selftest, one process per robot);
 // dds-selftest launches K of them and checks exactly-once in-range delivery, range, a killed
 // process and injected loss; dds-config prints or writes the Cyclone config (loopback by default).
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -12,6 +13,7 @@
 #include "voronav/core/error.hpp"
 #include "voronav/dds/cyclone_config.hpp"
 #include "voronav/dds/selftest.hpp"
+#include "voronav/render/plot.hpp"
 
 namespace voronav::cli {
 namespace {
@@ -90,14 +92,14 @@ void run_selftest(const SelftestArgs& a) {
   } else {
     std::cout << "dds selftest: " << (r.passed ? "PASSED" : "FAILED") << "\n"
               << "processes:   " << r.processes << (o.kill_id ? " (one killed)" : "") << "\n"
-              << "delivered:   " << r.delivered << " of " << r.expected
-              << " in-range messages\n"
+              << "delivered:   " << r.delivered << " of " << r.expected << " in-range messages\n"
               << "out of range delivered: " << r.out_of_range_delivered
               << ", duplicates: " << r.duplicates << "\n"
               << "latency:     p50 " << r.latency_p50_ms << " ms, p99 " << r.latency_p99_ms
               << " ms\n"
               << "wall time:   " << r.wall_s << " s\n";
-    for (const auto& v : r.violations) std::cout << "  violation: " << v << "\n";
+    for (const auto& v : r.violations)
+      std::cout << "  violation: " << v << "\n";
   }
   if (!r.passed) exit_code() = 1;
 }
@@ -172,7 +174,86 @@ void setup_config(CLI::App& app) {
   });
 }
 
+struct ScalingArgs {
+  std::vector<std::uint32_t> processes{2, 6, 12, 20};
+  double startup_timeout = 60.0;
+  double quiet = 3.0;
+  std::string png;
+  bool json = false;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+void run_scaling(const ScalingArgs& a) {
+  nlohmann::json runs = nlohmann::json::array();
+  std::vector<double> n, wall, disc_med, disc_max;
+  for (std::uint32_t k : a.processes) {
+    dds::SelftestOptions o;
+    o.processes = k;
+    o.startup_timeout_s = a.startup_timeout;
+    o.quiet_s = a.quiet;
+    o.timeout_s = a.startup_timeout + a.quiet + 60.0;
+    const dds::SelftestReport r = dds::run_selftest(o);
+    const auto j = nlohmann::json::parse(r.json);
+    std::vector<double> starts;
+    for (const auto& c : j["children"])
+      if (c.contains("startup_s")) starts.push_back(c["startup_s"].get<double>());
+    const double smax = starts.empty() ? 0.0 : *std::max_element(starts.begin(), starts.end());
+    runs.push_back({{"processes", k},
+                    {"passed", r.passed},
+                    {"wall_s", r.wall_s},
+                    {"discovery_median_s", median(starts)},
+                    {"discovery_max_s", smax},
+                    {"delivered", r.delivered},
+                    {"expected", r.expected},
+                    {"violations", r.violations.size()}});
+    n.push_back(k);
+    wall.push_back(r.wall_s);
+    disc_med.push_back(median(starts));
+    disc_max.push_back(smax);
+    if (!a.json)
+      std::cout << k << " processes: " << (r.passed ? "passed" : "FAILED") << ", wall " << r.wall_s
+                << " s, discovery median " << median(starts) << " s, max " << smax << " s\n";
+    if (!r.passed) exit_code() = 1;
+  }
+  if (!a.png.empty()) {
+    render::PlotOptions po;
+    po.title = "dds-selftest on loopback: time vs. number of robot processes";
+    po.x_label = "processes";
+    po.y_label = "seconds";
+    render::Plot plot(po);
+    plot.line("selftest wall time", n, wall, render::Color::hex(0x1f77b4), true);
+    plot.line("discovery, slowest process", n, disc_max, render::Color::hex(0xd62728), true);
+    plot.line("discovery, median process", n, disc_med, render::Color::hex(0x2ca02c), true);
+    plot.save(a.png);
+  }
+  if (a.json) print_json({{"runs", runs}});
+}
+
+void setup_scaling(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "dds-scaling",
+      "Run dds-selftest for several process counts; report (and plot) wall and discovery time");
+  auto a = std::make_shared<ScalingArgs>();
+  cmd->add_option("--processes", a->processes, "Process counts, e.g. 2,6,12,20")
+      ->delimiter(',')
+      ->check(CLI::Range(2, 110))
+      ->capture_default_str();
+  cmd->add_option("--startup-timeout", a->startup_timeout, "Discovery limit per process [s]")
+      ->capture_default_str();
+  cmd->add_option("--quiet", a->quiet, "A process stops after this long without traffic [s]")
+      ->capture_default_str();
+  cmd->add_option("--png", a->png, "Write a plot (PNG or SVG by extension)");
+  cmd->add_flag("--json", a->json, "JSON output: one entry per process count");
+  cmd->callback([a] { run_scaling(*a); });
+}
+
 const Command reg_echo{{"dds-echo", setup_echo, 80}};
+const Command reg_scaling{{"dds-scaling", setup_scaling, 83}};
 const Command reg_selftest{{"dds-selftest", setup_selftest, 81}};
 const Command reg_config{{"dds-config", setup_config, 82}};
 

@@ -13,11 +13,20 @@ std::string xml_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out.push_back(c);
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out.push_back(c);
     }
   }
   return out;
@@ -58,9 +67,8 @@ std::string cyclone_config_xml(const CycloneConfigOptions& o) {
     << "  <Domain Id=\"any\">\n"
     << "    <General>\n"
     << "      <Interfaces>\n"
-    << "        <NetworkInterface "
-    << (looks_like_address(o.interface) ? "address" : "name") << "=\""
-    << xml_escape(o.interface) << "\"/>\n"
+    << "        <NetworkInterface " << (looks_like_address(o.interface) ? "address" : "name")
+    << "=\"" << xml_escape(o.interface) << "\"/>\n"
     << "      </Interfaces>\n"
     << "      <AllowMulticast>" << (o.allow_multicast ? "true" : "false") << "</AllowMulticast>\n"
     << "    </General>\n"
@@ -71,7 +79,8 @@ std::string cyclone_config_xml(const CycloneConfigOptions& o) {
     << "      <LeaseDuration>" << duration(o.lease_duration_s) << "</LeaseDuration>\n"
     << "      <SPDPInterval>" << duration(o.spdp_interval_s) << "</SPDPInterval>\n"
     << "      <Peers>\n";
-  for (const auto& p : o.peers) x << "        <Peer address=\"" << xml_escape(p) << "\"/>\n";
+  for (const auto& p : o.peers)
+    x << "        <Peer address=\"" << xml_escape(p) << "\"/>\n";
   x << "      </Peers>\n"
     << "    </Discovery>\n"
     << "  </Domain>\n"
@@ -79,7 +88,9 @@ std::string cyclone_config_xml(const CycloneConfigOptions& o) {
   return x.str();
 }
 
-std::string loopback_config_xml() { return cyclone_config_xml(CycloneConfigOptions{}); }
+std::string loopback_config_xml() {
+  return cyclone_config_xml(CycloneConfigOptions{});
+}
 
 void write_cyclone_config(const std::filesystem::path& path, const CycloneConfigOptions& options) {
   const std::string xml = cyclone_config_xml(options);

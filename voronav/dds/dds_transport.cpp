@@ -20,13 +20,20 @@ namespace voronav::dds {
 
 std::string_view to_string(RejectReason r) {
   switch (r) {
-    case RejectReason::kUnknownVersion: return "unknown_version";
-    case RejectReason::kEmptyPayload: return "empty_payload";
-    case RejectReason::kLengthMismatch: return "length_mismatch";
-    case RejectReason::kTooLarge: return "too_large";
-    case RejectReason::kSpoofedSender: return "spoofed_sender";
-    case RejectReason::kInvalidPose: return "invalid_pose";
-    case RejectReason::kUnknownWriter: return "unknown_writer";
+    case RejectReason::kUnknownVersion:
+      return "unknown_version";
+    case RejectReason::kEmptyPayload:
+      return "empty_payload";
+    case RejectReason::kLengthMismatch:
+      return "length_mismatch";
+    case RejectReason::kTooLarge:
+      return "too_large";
+    case RejectReason::kSpoofedSender:
+      return "spoofed_sender";
+    case RejectReason::kInvalidPose:
+      return "invalid_pose";
+    case RejectReason::kUnknownWriter:
+      return "unknown_writer";
   }
   return "unknown";
 }
@@ -62,9 +69,9 @@ double steady_seconds() {
 }
 
 [[noreturn]] void fail(const char* what, dds_return_t rc) {
-  throw Error("cyclonedds", 0,
-              std::string(what) + " failed: " + dds_strretcode(rc) + " (" + std::to_string(rc) +
-                  ")");
+  throw Error(
+      "cyclonedds", 0,
+      std::string(what) + " failed: " + dds_strretcode(rc) + " (" + std::to_string(rc) + ")");
 }
 
 dds_entity_t check(dds_entity_t e, const char* what) {
@@ -115,7 +122,8 @@ struct DomainRegistry {
 
 void validate(const DdsTransportOptions& o) {
   if (o.self == network::kBroadcast) throw Error("self", 0, "the broadcast id is not a robot id");
-  if (o.domain_id > 230) throw Error("domain_id", 0, "expected 0..230, got " + std::to_string(o.domain_id));
+  if (o.domain_id > 230)
+    throw Error("domain_id", 0, "expected 0..230, got " + std::to_string(o.domain_id));
   if (o.partition.empty()) throw Error("partition", 0, "expected a non-empty partition name");
   if (!(o.radio_range_m > 0.0))
     throw Error("radio_range_m", 0, "expected a positive range [m] (or infinity)");
@@ -145,14 +153,14 @@ struct Endpoints {
       explicit_domain = true;
     }
     try {
-      participant = check(dds_create_participant(o.domain_id, nullptr, nullptr),
-                          "dds_create_participant");
+      participant =
+          check(dds_create_participant(o.domain_id, nullptr, nullptr), "dds_create_participant");
       payload_topic = check(
           dds_create_topic(participant, &voronav_dds_Payload_desc, kPayloadTopic, nullptr, nullptr),
           "dds_create_topic(payload)");
-      pose_topic = check(
-          dds_create_topic(participant, &voronav_dds_Pose_desc, kPoseTopic, nullptr, nullptr),
-          "dds_create_topic(pose)");
+      pose_topic =
+          check(dds_create_topic(participant, &voronav_dds_Pose_desc, kPoseTopic, nullptr, nullptr),
+                "dds_create_topic(pose)");
       dds_qos_t* q = dds_create_qos();
       dds_qset_partition1(q, o.partition.c_str());
       publisher = dds_create_publisher(participant, q, nullptr);
@@ -292,7 +300,7 @@ struct DdsTransport::Impl {
     const std::uint64_t n = ++stats.rejected_by_reason[i];
     if (n <= 10 || n % 1000 == 0)
       logger()->error("dds robot {}: rejected sample ({}): {} [{} so far]", options.self.value,
-                    to_string(r), detail, n);
+                      to_string(r), detail, n);
   }
 
   // Binds robot id <-> participant on first sight; false when it contradicts an earlier binding.
@@ -408,7 +416,8 @@ struct DdsTransport::Impl {
     if (bytes.empty()) throw Error("bytes", 0, "cannot send an empty payload");
     if (bytes.size() > options.max_payload_bytes)
       throw Error("bytes", 0,
-                  "payload of " + std::to_string(bytes.size()) + " bytes exceeds max_payload_bytes " +
+                  "payload of " + std::to_string(bytes.size()) +
+                      " bytes exceeds max_payload_bytes " +
                       std::to_string(options.max_payload_bytes));
     std::lock_guard lock(mutex);
     voronav_dds_Payload s{};
@@ -488,7 +497,8 @@ std::vector<network::Packet> DdsTransport::receive(network::RobotId self) {
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<network::Packet> out;
   out.reserve(got.size());
-  for (auto& g : got) out.push_back(std::move(g.second));
+  for (auto& g : got)
+    out.push_back(std::move(g.second));
   return out;
 }
 
@@ -551,7 +561,8 @@ std::optional<Vec2> DdsTransport::known_position(network::RobotId id) const {
 std::vector<network::RobotId> DdsTransport::known_robots() const {
   std::lock_guard lock(impl_->mutex);
   std::vector<network::RobotId> out;
-  for (const auto& [id, pos] : impl_->positions) out.push_back(network::RobotId{id});
+  for (const auto& [id, pos] : impl_->positions)
+    out.push_back(network::RobotId{id});
   return out;
 }
 
@@ -564,8 +575,12 @@ DdsTransportStats DdsTransport::stats() const {
   return impl_->stats;
 }
 
-network::RobotId DdsTransport::self() const { return impl_->options.self; }
-const DdsTransportOptions& DdsTransport::options() const { return impl_->options; }
+network::RobotId DdsTransport::self() const {
+  return impl_->options.self;
+}
+const DdsTransportOptions& DdsTransport::options() const {
+  return impl_->options;
+}
 
 // ---------------------------------------------------------------------------------------------
 

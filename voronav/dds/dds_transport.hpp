@@ -12,9 +12,9 @@
 // dropped when the sender's latest pose from the pose topic is farther than `radio_range_m` from
 // this robot's own position. An unknown pose (sender's or our own) means the packet is dropped,
 // because delivering it could let a robot hear someone the simulated radio would not.
-// Every incoming sample is checked (wire version, empty payload, length field vs. bytes, size limit,
-// non-finite pose, a participant claiming an id that another participant already uses or a second
-// id): a bad sample is rejected with a logged error (spdlog) and counted, never a crash.
+// Every incoming sample is checked (wire version, empty payload, length field vs. bytes, size
+// limit, non-finite pose, a participant claiming an id that another participant already uses or a
+// second id): a bad sample is rejected with a logged error (spdlog) and counted, never a crash.
 // Loss injection: each packet that passes the range check is dropped with `loss_probability`
 // (seeded), like the simulated radio's loss. Every wait takes a timeout.
 #pragma once
@@ -53,7 +53,8 @@ struct DdsTransportOptions {
   std::uint64_t loss_seed = 1;
   /// Keep-last depth of the payload history, per sender, in the writer and the reader (>= 1).
   int history_depth = 256;
-  /// Largest accepted payload [bytes]; larger outgoing payloads throw, larger incoming are rejected.
+  /// Largest accepted payload [bytes]; larger outgoing payloads throw, larger incoming are
+  /// rejected.
   std::size_t max_payload_bytes = 64 * 1024;
   /// Longest time a reliable write may block when the receivers are slow [s].
   double max_blocking_s = 1.0;
@@ -83,14 +84,14 @@ struct DdsTransportStats {
   std::uint64_t sent_broadcast = 0;
   std::uint64_t poses_sent = 0;
   std::uint64_t poses_received = 0;
-  std::uint64_t delivered = 0;           ///< packets returned by receive()
-  std::uint64_t not_for_me = 0;          ///< directed to another robot (normal, not an error)
-  std::uint64_t dropped_range = 0;       ///< sender beyond radio range
-  std::uint64_t dropped_unknown_pose = 0;///< sender's or own position unknown (range is finite)
-  std::uint64_t dropped_loss = 0;        ///< injected loss
-  std::uint64_t duplicates = 0;          ///< sequence number already seen from that sender
-  std::uint64_t gaps = 0;                ///< sequence numbers skipped (lost to history overflow)
-  std::uint64_t rejected = 0;            ///< malformed samples, all reasons
+  std::uint64_t delivered = 0;             ///< packets returned by receive()
+  std::uint64_t not_for_me = 0;            ///< directed to another robot (normal, not an error)
+  std::uint64_t dropped_range = 0;         ///< sender beyond radio range
+  std::uint64_t dropped_unknown_pose = 0;  ///< sender's or own position unknown (range is finite)
+  std::uint64_t dropped_loss = 0;          ///< injected loss
+  std::uint64_t duplicates = 0;            ///< sequence number already seen from that sender
+  std::uint64_t gaps = 0;                  ///< sequence numbers skipped (lost to history overflow)
+  std::uint64_t rejected = 0;              ///< malformed samples, all reasons
   std::array<std::uint64_t, kRejectReasonCount> rejected_by_reason{};
 };
 
@@ -103,7 +104,8 @@ class DdsTransport final : public network::Transport {
   DdsTransport(const DdsTransport&) = delete;
   DdsTransport& operator=(const DdsTransport&) = delete;
 
-  void send(network::RobotId from, network::RobotId to, std::span<const std::uint8_t> bytes) override;
+  void send(network::RobotId from, network::RobotId to,
+            std::span<const std::uint8_t> bytes) override;
   void broadcast(network::RobotId from, std::span<const std::uint8_t> bytes) override;
   [[nodiscard]] std::vector<network::Packet> receive(network::RobotId self) override;
   /// Publishes this robot's position on the pose topic (only `self`; other ids throw, since a

@@ -36,17 +36,21 @@ DdsTransportOptions base_options(std::uint32_t self, double range = 10.0) {
   return o;
 }
 
-std::vector<std::uint8_t> bytes_of(const std::string& s) { return {s.begin(), s.end()}; }
-std::string text_of(const Packet& p) { return {p.bytes.begin(), p.bytes.end()}; }
+std::vector<std::uint8_t> bytes_of(const std::string& s) {
+  return {s.begin(), s.end()};
+}
+std::string text_of(const Packet& p) {
+  return {p.bytes.begin(), p.bytes.end()};
+}
 
 // Receives until `n` packets arrived or the timeout passed.
 std::vector<Packet> receive_n(DdsTransport& t, std::size_t n, double timeout_s = kTimeout) {
   std::vector<Packet> got;
-  const auto deadline =
-      std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   while (got.size() < n && std::chrono::steady_clock::now() < deadline) {
     t.wait_for_data(0.05);
-    for (auto& p : t.receive(t.self())) got.push_back(std::move(p));
+    for (auto& p : t.receive(t.self()))
+      got.push_back(std::move(p));
   }
   return got;
 }
@@ -187,7 +191,8 @@ TEST(DdsTransport, DirectedMessageReachesOnlyItsReceiver) {
   a.update_position(RobotId{1}, {0, 0});
   b.update_position(RobotId{2}, {1, 0});
   c.update_position(RobotId{3}, {0, 1});
-  for (auto* t : {&a, &b, &c}) ASSERT_TRUE(t->wait_for_peers(2, kTimeout));
+  for (auto* t : {&a, &b, &c})
+    ASSERT_TRUE(t->wait_for_peers(2, kTimeout));
   a.send(RobotId{1}, RobotId{3}, bytes_of("for c"));
   const auto at_c = receive_n(c, 1);
   ASSERT_EQ(at_c.size(), 1u);
@@ -201,7 +206,8 @@ TEST(DdsTransport, RangeFilterUsesLatestPose) {
   a.update_position(RobotId{1}, {0, 0});
   near.update_position(RobotId{2}, {10.0, 0});  // exactly at range: in
   far.update_position(RobotId{3}, {10.5, 0});   // just beyond
-  for (auto* t : {&a, &near, &far}) ASSERT_TRUE(t->wait_for_peers(2, kTimeout));
+  for (auto* t : {&a, &near, &far})
+    ASSERT_TRUE(t->wait_for_peers(2, kTimeout));
   a.broadcast(RobotId{1}, bytes_of("one"));
   EXPECT_EQ(receive_n(near, 1).size(), 1u);
   EXPECT_TRUE(receive_for(far, 0.3).empty());
@@ -305,7 +311,7 @@ TEST_F(Malformed, BadSamplesAreRejectedAndCounted) {
   raw_->write(s);  // claims robot 1's id, which belongs to another participant
   s = valid(6, "i am robot 2");
   s.sender = 2;
-  raw_->write(s);  // claims the receiver's own id
+  raw_->write(s);                                      // claims the receiver's own id
   raw_->write(RawPose{1, 7, std::nan(""), 0.0, 0.0});  // non-finite pose
   raw_->write(RawPose{3, 9, 1.0, 0.0, 0.0});           // pose with unknown version
   raw_->write(RawPose{1, 8, 1.0, 0.0, 0.0});           // the participant claims a second id
@@ -328,9 +334,9 @@ TEST_F(Malformed, BadSamplesAreRejectedAndCounted) {
 
 TEST_F(Malformed, DuplicatesDroppedAndGapsCounted) {
   raw_->write(valid(1, "first"));
-  raw_->write(valid(1, "again"));   // same sequence number
-  raw_->write(valid(5, "fifth"));   // 2, 3, 4 never sent
-  raw_->write(valid(3, "late"));    // older than the last one
+  raw_->write(valid(1, "again"));  // same sequence number
+  raw_->write(valid(5, "fifth"));  // 2, 3, 4 never sent
+  raw_->write(valid(3, "late"));   // older than the last one
   const auto got = receive_n(*b_, 2);
   (void)receive_for(*b_, 0.2);
   ASSERT_EQ(got.size(), 2u);
@@ -360,7 +366,8 @@ std::vector<int> lossy_run(double p, std::uint64_t seed, int n) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
   while (std::chrono::steady_clock::now() < deadline) {
     b.wait_for_data(0.05);
-    for (const auto& pk : b.receive(RobotId{2})) got.push_back(pk.bytes[0] | (pk.bytes[1] << 8));
+    for (const auto& pk : b.receive(RobotId{2}))
+      got.push_back(pk.bytes[0] | (pk.bytes[1] << 8));
     const auto st = b.stats();
     if (st.delivered + st.dropped_loss >= static_cast<std::uint64_t>(n)) break;
   }
@@ -376,7 +383,8 @@ TEST(DdsTransport, LossIsHonouredAndSeeded) {
   // Binomial(200, 0.5): mean 100, sd 7; +-35 is 5 sd.
   EXPECT_GT(first.size(), 65u);
   EXPECT_LT(first.size(), 135u);
-  for (std::size_t i = 1; i < first.size(); ++i) EXPECT_LT(first[i - 1], first[i]);
+  for (std::size_t i = 1; i < first.size(); ++i)
+    EXPECT_LT(first[i - 1], first[i]);
   const auto second = lossy_run(0.5, 42, n);
   EXPECT_EQ(first, second);  // same seed, same arrivals: the same packets are lost
   EXPECT_TRUE(lossy_run(1.0, 1, 50).empty());
@@ -392,7 +400,8 @@ TEST(DdsTransport, BoundedHistoryLosesOldestAndCountsGaps) {
   ASSERT_TRUE(a.wait_for_peers(1, kTimeout));
   ASSERT_TRUE(b.wait_for_peers(1, kTimeout));
   const int n = 100;
-  for (int i = 0; i < n; ++i) a.broadcast(RobotId{1}, std::vector<std::uint8_t>{std::uint8_t(i)});
+  for (int i = 0; i < n; ++i)
+    a.broadcast(RobotId{1}, std::vector<std::uint8_t>{std::uint8_t(i)});
   ASSERT_TRUE(a.flush(kTimeout));
   // b did not take anything meanwhile: its keep-last history of 16 kept only the newest.
   const auto got = receive_for(b, 0.3);

@@ -22,11 +22,16 @@ namespace voronav::dds {
 
 std::string_view to_string(ChildStatus s) {
   switch (s) {
-    case ChildStatus::kExited: return "exited";
-    case ChildStatus::kSignaled: return "signaled";
-    case ChildStatus::kKilled: return "killed";
-    case ChildStatus::kTimedOut: return "timed_out";
-    case ChildStatus::kFailedToStart: return "failed_to_start";
+    case ChildStatus::kExited:
+      return "exited";
+    case ChildStatus::kSignaled:
+      return "signaled";
+    case ChildStatus::kKilled:
+      return "killed";
+    case ChildStatus::kTimedOut:
+      return "timed_out";
+    case ChildStatus::kFailedToStart:
+      return "failed_to_start";
   }
   return "unknown";
 }
@@ -74,7 +79,9 @@ ProcessGroup::~ProcessGroup() {
   }
 }
 
-std::size_t ProcessGroup::size() const { return children_.size(); }
+std::size_t ProcessGroup::size() const {
+  return children_.size();
+}
 bool ProcessGroup::running(std::size_t index) const {
   return index < children_.size() && children_[index].running;
 }
@@ -100,13 +107,16 @@ std::size_t ProcessGroup::start(ChildSpec spec) {
     if (eq != std::string::npos && spec.env.count(kv.substr(0, eq)) != 0) continue;
     env_strings.push_back(std::move(kv));
   }
-  for (const auto& [k, v] : spec.env) env_strings.push_back(k + "=" + v);
+  for (const auto& [k, v] : spec.env)
+    env_strings.push_back(k + "=" + v);
   std::vector<char*> envp;
-  for (auto& s : env_strings) envp.push_back(s.data());
+  for (auto& s : env_strings)
+    envp.push_back(s.data());
   envp.push_back(nullptr);
   std::vector<std::string> args = spec.argv;
   std::vector<char*> argv;
-  for (auto& s : args) argv.push_back(s.data());
+  for (auto& s : args)
+    argv.push_back(s.data());
   argv.push_back(nullptr);
 
   int out_pipe[2], err_pipe[2], exec_pipe[2];
@@ -117,7 +127,8 @@ std::size_t ProcessGroup::start(ChildSpec spec) {
     throw Error("pipe2", 0, std::strerror(errno));
   }
   if (::pipe2(exec_pipe, O_CLOEXEC) != 0) {
-    for (int fd : {out_pipe[0], out_pipe[1], err_pipe[0], err_pipe[1]}) ::close(fd);
+    for (int fd : {out_pipe[0], out_pipe[1], err_pipe[0], err_pipe[1]})
+      ::close(fd);
     throw Error("pipe2", 0, std::strerror(errno));
   }
 
@@ -137,6 +148,10 @@ std::size_t ProcessGroup::start(ChildSpec spec) {
     if (devnull >= 0) ::dup2(devnull, 0);
     ::dup2(out_pipe[1], 1);
     ::dup2(err_pipe[1], 2);
+    // Do not leak the parent's descriptors (e.g. DDS sockets bound to discovery ports); the
+    // exec-error pipe is kept open (it is close-on-exec).
+    if (exec_pipe[1] > 3) ::close_range(3, static_cast<unsigned>(exec_pipe[1]) - 1, 0);
+    ::close_range(static_cast<unsigned>(exec_pipe[1]) + 1, ~0U, 0);
     ::execve(argv[0], argv.data(), envp.data());
     const int err = errno;
     ssize_t ignored = ::write(exec_pipe[1], &err, sizeof err);
@@ -342,21 +357,23 @@ std::vector<ChildResult> ProcessGroup::wait_all(const std::function<void(Process
   }
   std::vector<ChildResult> out;
   out.reserve(children_.size());
-  for (auto& c : children_) out.push_back(c.result);
+  for (auto& c : children_)
+    out.push_back(c.result);
   return out;
 }
 
-std::vector<ChildResult> run_processes(std::vector<ChildSpec> specs,
-                                       const LaunchOptions& options) {
+std::vector<ChildResult> run_processes(std::vector<ChildSpec> specs, const LaunchOptions& options) {
   ProcessGroup g(options);
-  for (auto& s : specs) g.start(std::move(s));
+  for (auto& s : specs)
+    g.start(std::move(s));
   return g.wait_all();
 }
 
 std::string self_executable() {
   std::error_code ec;
   auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) throw Error("/proc/self/exe", 0, "cannot resolve the running executable: " + ec.message());
+  if (ec)
+    throw Error("/proc/self/exe", 0, "cannot resolve the running executable: " + ec.message());
   return p.string();
 }
 

@@ -6,12 +6,12 @@
 // POSIX only (fork, execve, poll, waitpid).
 #pragma once
 
+#include <sys/types.h>
 #include <cstddef>
 #include <functional>
 #include <map>
 #include <string>
 #include <string_view>
-#include <sys/types.h>
 #include <vector>
 
 namespace voronav::dds {

@@ -3,8 +3,10 @@
 // no other executable.
 #include "voronav/dds/process_launcher.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -75,6 +77,15 @@ TEST(ProcessGroup, CollectsOutputAndExitCodes) {
   EXPECT_EQ(r[1].exit_code, 3);
   EXPECT_FALSE(r[1].ok());
   EXPECT_EQ(r[2].stdout_text, "hello from env\n");
+}
+
+TEST(ProcessGroup, ChildInheritsNoOtherDescriptors) {
+  const int leaked = ::open("/dev/null", O_RDONLY);  // deliberately not close-on-exec
+  ASSERT_GE(leaked, 3);
+  const auto r = run_processes({sh("fds", "ls /proc/$$/fd")});
+  ::close(leaked);
+  ASSERT_TRUE(r[0].ok());
+  EXPECT_EQ(r[0].stdout_text, "0\n1\n2\n");
 }
 
 TEST(ProcessGroup, LargeOutputOfManyChildrenIsComplete) {
@@ -210,11 +221,14 @@ SelftestOptions selftest_options(std::uint32_t n) {
   return o;
 }
 
-nlohmann::json parse(const SelftestReport& r) { return nlohmann::json::parse(r.json); }
+nlohmann::json parse(const SelftestReport& r) {
+  return nlohmann::json::parse(r.json);
+}
 
 TEST(Selftest, SixProcessesEveryInRangeMessageExactlyOnce) {
   const auto r = run_selftest(selftest_options(6));
-  for (const auto& v : r.violations) ADD_FAILURE() << v;
+  for (const auto& v : r.violations)
+    ADD_FAILURE() << v;
   EXPECT_TRUE(r.passed);
   // Line of 6 robots 10 m apart, range 25 m: each hears its neighbours up to 2 away:
   // ordered in-range pairs = 2 * (5 + 4) = 18, 5 broadcasts each; directed i -> i+1 mod 6 is in
@@ -235,7 +249,8 @@ TEST(Selftest, KilledProcessDoesNotHangTheOthers) {
   const auto t0 = std::chrono::steady_clock::now();
   const auto r = run_selftest(o);
   const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  for (const auto& v : r.violations) ADD_FAILURE() << v;
+  for (const auto& v : r.violations)
+    ADD_FAILURE() << v;
   EXPECT_TRUE(r.passed);
   EXPECT_LT(took, 25.0);
   EXPECT_EQ(r.children[2].status, ChildStatus::kKilled);
@@ -253,7 +268,8 @@ TEST(Selftest, LossIsHonoured) {
   o.interval_s = 0.002;
   o.loss = 0.3;
   const auto r = run_selftest(o);
-  for (const auto& v : r.violations) ADD_FAILURE() << v;
+  for (const auto& v : r.violations)
+    ADD_FAILURE() << v;
   EXPECT_TRUE(r.passed);
   // 4 robots, everyone in range: 12 pairs x 50 broadcasts + 4 x 50 directed = 800 expected.
   ASSERT_EQ(r.expected, 800u);

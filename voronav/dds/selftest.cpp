@@ -21,8 +21,8 @@
 namespace voronav::dds {
 namespace {
 
-using nlohmann::json;
 using network::RobotId;
+using nlohmann::json;
 
 constexpr std::size_t kHeaderBytes = 16;
 constexpr std::uint8_t kBroadcastKind = 0;
@@ -34,11 +34,13 @@ double now_s() {
 }
 
 void put_u32(std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v) {
-  for (int i = 0; i < 4; ++i) b[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v >> (8 * i));
+  for (int i = 0; i < 4; ++i)
+    b[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v >> (8 * i));
 }
 std::uint32_t get_u32(const std::vector<std::uint8_t>& b, std::size_t at) {
   std::uint32_t v = 0;
-  for (int i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(b[at + static_cast<std::size_t>(i)]) << (8 * i);
+  for (int i = 0; i < 4; ++i)
+    v |= static_cast<std::uint32_t>(b[at + static_cast<std::size_t>(i)]) << (8 * i);
   return v;
 }
 std::uint8_t filler(std::uint32_t sender, std::uint32_t round, std::size_t i) {
@@ -56,7 +58,8 @@ std::vector<std::uint8_t> make_payload(std::uint8_t kind, std::uint32_t sender, 
   put_u32(b, 4, sender);
   put_u32(b, 8, round);
   put_u32(b, 12, static_cast<std::uint32_t>(size));
-  for (std::size_t i = kHeaderBytes; i < size; ++i) b[i] = filler(sender, round, i);
+  for (std::size_t i = kHeaderBytes; i < size; ++i)
+    b[i] = filler(sender, round, i);
   return b;
 }
 
@@ -77,16 +80,21 @@ std::optional<Parsed> parse_payload(const std::vector<std::uint8_t>& b) {
 double percentile(std::vector<double> v, double q) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
-  const auto i = static_cast<std::size_t>(std::clamp(q * static_cast<double>(v.size() - 1), 0.0,
-                                                     static_cast<double>(v.size() - 1)));
+  const auto i = static_cast<std::size_t>(
+      std::clamp(q * static_cast<double>(v.size() - 1), 0.0, static_cast<double>(v.size() - 1)));
   return v[i];
 }
 
-Vec2 position_of(std::uint32_t id, double spacing) { return {id * spacing, 0.0}; }
-bool in_range(std::uint32_t a, std::uint32_t b, double spacing, double range) {
-  return !std::isfinite(range) || distance(position_of(a, spacing), position_of(b, spacing)) <= range;
+Vec2 position_of(std::uint32_t id, double spacing) {
+  return {id * spacing, 0.0};
 }
-std::uint32_t target_of(std::uint32_t id, std::uint32_t peers) { return (id + 1) % peers; }
+bool in_range(std::uint32_t a, std::uint32_t b, double spacing, double range) {
+  return !std::isfinite(range) ||
+         distance(position_of(a, spacing), position_of(b, spacing)) <= range;
+}
+std::uint32_t target_of(std::uint32_t id, std::uint32_t peers) {
+  return (id + 1) % peers;
+}
 
 void validate(const EchoOptions& o) {
   if (o.peers < 2) throw Error("--peers", 0, "expected at least 2 robots");
@@ -148,42 +156,73 @@ EchoOptions parse_echo_args(const std::vector<std::string>& args) {
     const std::string& k = args[i];
     if (i + 1 >= args.size()) throw Error(k, 0, "expected a value");
     const std::string& v = args[++i];
-    if (k == "--id") o.id = static_cast<std::uint32_t>(std::min<std::uint64_t>(parse_uint(k, v), 0xfffffffe));
-    else if (k == "--peers") o.peers = static_cast<std::uint32_t>(std::min<std::uint64_t>(parse_uint(k, v), 100000));
-    else if (k == "--rounds") o.rounds = static_cast<int>(std::min<std::uint64_t>(parse_uint(k, v), 10000000));
-    else if (k == "--interval") o.interval_s = parse_double(k, v);
-    else if (k == "--payload-bytes") o.payload_bytes = static_cast<std::size_t>(parse_uint(k, v));
-    else if (k == "--spacing") o.spacing_m = parse_double(k, v);
-    else if (k == "--range") o.range_m = parse_double(k, v);
-    else if (k == "--loss") o.loss = parse_double(k, v);
-    else if (k == "--seed") o.seed = parse_uint(k, v);
-    else if (k == "--domain") o.domain_id = static_cast<std::uint32_t>(std::min<std::uint64_t>(parse_uint(k, v), 100000));
-    else if (k == "--partition") o.partition = v;
-    else if (k == "--history-depth") o.history_depth = static_cast<int>(std::min<std::uint64_t>(parse_uint(k, v), 1000000));
-    else if (k == "--startup-timeout") o.startup_timeout_s = parse_double(k, v);
-    else if (k == "--quiet") o.quiet_s = parse_double(k, v);
-    else if (k == "--timeout") o.timeout_s = parse_double(k, v);
-    else throw Error(k, 0, "unknown option");
+    if (k == "--id")
+      o.id = static_cast<std::uint32_t>(std::min<std::uint64_t>(parse_uint(k, v), 0xfffffffe));
+    else if (k == "--peers")
+      o.peers = static_cast<std::uint32_t>(std::min<std::uint64_t>(parse_uint(k, v), 100000));
+    else if (k == "--rounds")
+      o.rounds = static_cast<int>(std::min<std::uint64_t>(parse_uint(k, v), 10000000));
+    else if (k == "--interval")
+      o.interval_s = parse_double(k, v);
+    else if (k == "--payload-bytes")
+      o.payload_bytes = static_cast<std::size_t>(parse_uint(k, v));
+    else if (k == "--spacing")
+      o.spacing_m = parse_double(k, v);
+    else if (k == "--range")
+      o.range_m = parse_double(k, v);
+    else if (k == "--loss")
+      o.loss = parse_double(k, v);
+    else if (k == "--seed")
+      o.seed = parse_uint(k, v);
+    else if (k == "--domain")
+      o.domain_id = static_cast<std::uint32_t>(std::min<std::uint64_t>(parse_uint(k, v), 100000));
+    else if (k == "--partition")
+      o.partition = v;
+    else if (k == "--history-depth")
+      o.history_depth = static_cast<int>(std::min<std::uint64_t>(parse_uint(k, v), 1000000));
+    else if (k == "--startup-timeout")
+      o.startup_timeout_s = parse_double(k, v);
+    else if (k == "--quiet")
+      o.quiet_s = parse_double(k, v);
+    else if (k == "--timeout")
+      o.timeout_s = parse_double(k, v);
+    else
+      throw Error(k, 0, "unknown option");
   }
   return o;
 }
 
 std::vector<std::string> echo_args(const EchoOptions& o) {
-  return {"--id",       std::to_string(o.id),
-          "--peers",    std::to_string(o.peers),
-          "--rounds",   std::to_string(o.rounds),
-          "--interval", num(o.interval_s),
-          "--payload-bytes", std::to_string(o.payload_bytes),
-          "--spacing",  num(o.spacing_m),
-          "--range",    num(o.range_m),
-          "--loss",     num(o.loss),
-          "--seed",     std::to_string(o.seed),
-          "--domain",   std::to_string(o.domain_id),
-          "--partition", o.partition,
-          "--history-depth", std::to_string(o.history_depth),
-          "--startup-timeout", num(o.startup_timeout_s),
-          "--quiet",    num(o.quiet_s),
-          "--timeout",  num(o.timeout_s)};
+  return {"--id",
+          std::to_string(o.id),
+          "--peers",
+          std::to_string(o.peers),
+          "--rounds",
+          std::to_string(o.rounds),
+          "--interval",
+          num(o.interval_s),
+          "--payload-bytes",
+          std::to_string(o.payload_bytes),
+          "--spacing",
+          num(o.spacing_m),
+          "--range",
+          num(o.range_m),
+          "--loss",
+          num(o.loss),
+          "--seed",
+          std::to_string(o.seed),
+          "--domain",
+          std::to_string(o.domain_id),
+          "--partition",
+          o.partition,
+          "--history-depth",
+          std::to_string(o.history_depth),
+          "--startup-timeout",
+          num(o.startup_timeout_s),
+          "--quiet",
+          num(o.quiet_s),
+          "--timeout",
+          num(o.timeout_s)};
 }
 
 std::string run_echo(const EchoOptions& o) {
@@ -202,8 +241,8 @@ std::string run_echo(const EchoOptions& o) {
   to.close_timeout_s = 0.5;
   DdsTransport t(to);
   t.update_position(to.self, position_of(o.id, o.spacing_m));
-  const bool ready =
-      t.wait_for_peers(o.peers - 1, std::min(o.startup_timeout_s, std::max(0.0, deadline - now_s())));
+  const bool ready = t.wait_for_peers(
+      o.peers - 1, std::min(o.startup_timeout_s, std::max(0.0, deadline - now_s())));
   const double startup_s = now_s() - t0;
   const std::size_t known_at_start = t.known_robots().size();
   const std::size_t matched_at_start = t.matched_receivers();
@@ -270,8 +309,10 @@ std::string run_echo(const EchoOptions& o) {
       }
     }
   }
-  // Every matched receiver acknowledged (a dead one stops counting when its lease expires).
-  const bool flushed = t.flush(std::max(0.0, deadline - now_s()));
+  // Wait until every matched receiver acknowledged; a dead receiver stays matched until its lease
+  // expires, so the wait is bounded by max(2 s, 2 quiet periods).
+  const bool flushed =
+      t.flush(std::min(std::max(0.0, deadline - now_s()), std::max(2.0, 2.0 * o.quiet_s)));
   const double sent_done = now_s();
   while (now_s() < deadline) {
     drain();
@@ -295,7 +336,8 @@ std::string run_echo(const EchoOptions& o) {
   }
   const double window = last_rx - first_rx;
   double mean = 0.0;
-  for (double l : latency_ms) mean += l;
+  for (double l : latency_ms)
+    mean += l;
   if (!latency_ms.empty()) mean /= static_cast<double>(latency_ms.size());
   json out{{"id", o.id},
            {"peers", o.peers},
@@ -328,7 +370,8 @@ SelftestReport run_selftest(const SelftestOptions& o) {
     throw Error("--processes", 0, "expected 2..110, got " + std::to_string(o.processes));
   if (o.kill_id && *o.kill_id >= o.processes)
     throw Error("--kill", 0, "expected a robot id 0.." + std::to_string(o.processes - 1));
-  if (!(o.loss >= 0.0 && o.loss <= 1.0)) throw Error("--loss", 0, "expected a probability in [0, 1]");
+  if (!(o.loss >= 0.0 && o.loss <= 1.0))
+    throw Error("--loss", 0, "expected a probability in [0, 1]");
   if (!(o.timeout_s > 2.0) || !std::isfinite(o.timeout_s))
     throw Error("--timeout", 0, "expected more than 2 seconds");
   if (o.domain_id && *o.domain_id > 230) throw Error("--domain", 0, "expected 0..230");
@@ -378,7 +421,8 @@ SelftestReport run_selftest(const SelftestOptions& o) {
     ChildSpec spec;
     spec.name = "robot-" + std::to_string(i);
     spec.argv = command;
-    for (auto& a : echo_args(ei)) spec.argv.push_back(std::move(a));
+    for (auto& a : echo_args(ei))
+      spec.argv.push_back(std::move(a));
     spec.env["CYCLONEDDS_URI"] = cyclone_uri_for(config);
     group.start(std::move(spec));
   }
@@ -415,10 +459,11 @@ SelftestReport run_selftest(const SelftestOptions& o) {
       continue;
     }
     if (!c.ok()) {
-      std::string tail = c.stderr_text.size() > 300 ? c.stderr_text.substr(c.stderr_text.size() - 300)
-                                                    : c.stderr_text;
-      violation("robot " + std::to_string(i) + " " + std::string(to_string(c.status)) +
-                " (exit " + std::to_string(c.exit_code) + "): " + tail);
+      std::string tail = c.stderr_text.size() > 300
+                             ? c.stderr_text.substr(c.stderr_text.size() - 300)
+                             : c.stderr_text;
+      violation("robot " + std::to_string(i) + " " + std::string(to_string(c.status)) + " (exit " +
+                std::to_string(c.exit_code) + "): " + tail);
       continue;
     }
     try {
@@ -431,7 +476,8 @@ SelftestReport run_selftest(const SelftestOptions& o) {
   std::vector<double> p50s;
   for (const auto& [r, j] : reports) {
     rep.duplicates += j.value("duplicates", 0ULL);
-    if (j.value("corrupt", 0ULL) != 0) violation("robot " + std::to_string(r) + " got corrupt payloads");
+    if (j.value("corrupt", 0ULL) != 0)
+      violation("robot " + std::to_string(r) + " got corrupt payloads");
     if (j.value("wrong_destination", 0ULL) != 0)
       violation("robot " + std::to_string(r) + " got packets with the wrong destination");
     rep.rejected += j["transport"].value("rejected", 0ULL);
@@ -489,28 +535,28 @@ SelftestReport run_selftest(const SelftestOptions& o) {
     }
     children.push_back(cj);
   }
-  json out{{"passed", rep.passed},
-           {"processes", o.processes},
-           {"rounds", o.rounds},
-           {"payload_bytes", o.payload_bytes},
-           {"range_m", std::isfinite(o.range_m) ? json(o.range_m) : json("inf")},
-           {"spacing_m", o.spacing_m},
-           {"loss", o.loss},
-           {"killed", o.kill_id ? json(*o.kill_id) : json(nullptr)},
-           {"wall_s", rep.wall_s},
-           {"expected", rep.expected},
-           {"delivered", rep.delivered},
-           {"delivery_ratio", rep.expected ? static_cast<double>(rep.delivered) /
-                                                 static_cast<double>(rep.expected)
-                                           : 1.0},
-           {"out_of_range_delivered", rep.out_of_range_delivered},
-           {"duplicates", rep.duplicates},
-           {"rejected", rep.rejected},
-           {"latency_p50_ms", rep.latency_p50_ms},
-           {"latency_p99_ms", rep.latency_p99_ms},
-           {"throughput_msgs_s", rep.throughput_msgs_s},
-           {"violations", rep.violations},
-           {"children", children}};
+  json out{
+      {"passed", rep.passed},
+      {"processes", o.processes},
+      {"rounds", o.rounds},
+      {"payload_bytes", o.payload_bytes},
+      {"range_m", std::isfinite(o.range_m) ? json(o.range_m) : json("inf")},
+      {"spacing_m", o.spacing_m},
+      {"loss", o.loss},
+      {"killed", o.kill_id ? json(*o.kill_id) : json(nullptr)},
+      {"wall_s", rep.wall_s},
+      {"expected", rep.expected},
+      {"delivered", rep.delivered},
+      {"delivery_ratio",
+       rep.expected ? static_cast<double>(rep.delivered) / static_cast<double>(rep.expected) : 1.0},
+      {"out_of_range_delivered", rep.out_of_range_delivered},
+      {"duplicates", rep.duplicates},
+      {"rejected", rep.rejected},
+      {"latency_p50_ms", rep.latency_p50_ms},
+      {"latency_p99_ms", rep.latency_p99_ms},
+      {"throughput_msgs_s", rep.throughput_msgs_s},
+      {"violations", rep.violations},
+      {"children", children}};
   rep.json = out.dump();
   return rep;
 }

@@ -21,13 +21,13 @@ namespace voronav::dds {
 
 struct EchoOptions {
   std::uint32_t id = 0;
-  std::uint32_t peers = 2;  ///< robots 0..peers-1 take part (>= 2)
-  int rounds = 5;           ///< broadcasts and directed messages each robot sends (>= 1)
-  double interval_s = 0.02; ///< pause between rounds [s] (0 = as fast as possible)
+  std::uint32_t peers = 2;         ///< robots 0..peers-1 take part (>= 2)
+  int rounds = 5;                  ///< broadcasts and directed messages each robot sends (>= 1)
+  double interval_s = 0.02;        ///< pause between rounds [s] (0 = as fast as possible)
   std::size_t payload_bytes = 64;  ///< size of each test payload [bytes] (>= 16)
-  double spacing_m = 10.0;  ///< robot i stands at (i * spacing_m, 0) [m]
-  double range_m = 25.0;    ///< radio range [m]; infinity = everyone hears everyone
-  double loss = 0.0;        ///< injected loss probability at the receiver [0, 1]
+  double spacing_m = 10.0;         ///< robot i stands at (i * spacing_m, 0) [m]
+  double range_m = 25.0;           ///< radio range [m]; infinity = everyone hears everyone
+  double loss = 0.0;               ///< injected loss probability at the receiver [0, 1]
   std::uint64_t seed = 1;
   std::uint32_t domain_id = 0;
   std::string partition = "voronav-echo";
@@ -35,8 +35,8 @@ struct EchoOptions {
   std::string config_xml;
   int history_depth = 256;
   double startup_timeout_s = 10.0;  ///< wait for the other robots at most this long [s]
-  double quiet_s = 1.0;  ///< after sending, stop when nothing arrived for this long [s]
-  double timeout_s = 30.0;  ///< hard limit for the whole run [s]
+  double quiet_s = 1.0;             ///< after sending, stop when nothing arrived for this long [s]
+  double timeout_s = 30.0;          ///< hard limit for the whole run [s]
 };
 
 /// Parses "--id 3 --peers 6 ..." (the flags of `voronav dds-echo`); throws voronav::Error.
@@ -80,9 +80,9 @@ struct SelftestReport {
   std::uint64_t out_of_range_delivered = 0;  ///< must be 0
   std::uint64_t duplicates = 0;              ///< must be 0
   std::uint64_t rejected = 0;                ///< malformed samples seen by the transports
-  double latency_p50_ms = 0.0;  ///< median over receivers of their median latency
-  double latency_p99_ms = 0.0;  ///< largest per-receiver 99th percentile
-  double throughput_msgs_s = 0.0;  ///< payloads delivered per second, summed over receivers
+  double latency_p50_ms = 0.0;               ///< median over receivers of their median latency
+  double latency_p99_ms = 0.0;               ///< largest per-receiver 99th percentile
+  double throughput_msgs_s = 0.0;       ///< payloads delivered per second, summed over receivers
   std::vector<std::string> violations;  ///< what failed, human-readable
   std::vector<ChildResult> children;
   std::string json;  ///< the whole report as JSON
