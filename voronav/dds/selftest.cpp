@@ -310,9 +310,9 @@ std::string run_echo(const EchoOptions& o) {
     }
   }
   // Wait until every matched receiver acknowledged; a dead receiver stays matched until its lease
-  // expires, so the wait is bounded by max(2 s, 2 quiet periods).
+  // expires, so the wait is bounded by max(1 s, 2 quiet periods).
   const bool flushed =
-      t.flush(std::min(std::max(0.0, deadline - now_s()), std::max(2.0, 2.0 * o.quiet_s)));
+      t.flush(std::min(std::max(0.0, deadline - now_s()), std::max(1.0, 2.0 * o.quiet_s)));
   const double sent_done = now_s();
   while (now_s() < deadline) {
     drain();
