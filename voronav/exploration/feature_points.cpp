@@ -143,7 +143,8 @@ std::vector<FeaturePoint> extract_feature_points(const robot::LaserScan& scan,
       out.push_back({c, FeatureKind::kCorner, 1});
       ++corners;
     }
-    // Run ends where the obstacle's silhouette begins: next to a no-return or a farther return.
+    // Run ends where the obstacle's silhouette begins: next to a no-return or a farther return
+    // that does not continue the same wall.
     const double chord = distance(pts.front(), pts.back());
     double deviation = 0.0;
     for (const Vec2& p : pts)
@@ -153,8 +154,26 @@ std::vector<FeaturePoint> extract_feature_points(const robot::LaserScan& scan,
       if (scan.ranges[end_beam] > far_range) return false;
       if (!cyclic && ((before && end_beam == 0) || (!before && end_beam == n - 1))) return false;
       const std::size_t nb = before ? (end_beam + n - 1) % n : (end_beam + 1) % n;
-      if (!valid(nb)) return true;
-      return scan.ranges[nb] > scan.ranges[end_beam];
+      if (valid(nb) && scan.ranges[nb] <= scan.ranges[end_beam]) return false;  // occluded
+      // Next to a no-return: if the run's last piece of wall, continued straight, would still be
+      // hit by the neighbouring beam within range, the obstacle really ends here; otherwise the
+      // run is only cut by the range (a wall seen at a grazing angle) and this is no feature.
+      const std::size_t m = std::min<std::size_t>(pts.size() - 1, 3);
+      const Vec2 e = before ? pts.front() : pts.back();
+      const Vec2 inner = before ? pts[m] : pts[pts.size() - 1 - m];
+      const Vec2 wall = e - inner;
+      const double a = scan.pose.yaw + scan.angle(nb);
+      const Vec2 dir{std::cos(a), std::sin(a)};
+      const double denom = cross(dir, wall);
+      if (std::abs(denom) < 1e-12) return false;
+      // Ray origin + s dir meets the line e + u wall: s = cross(e - origin, wall) / cross(dir,
+      // wall).
+      const double s_hit = cross(e - scan.pose.position, wall) / denom;
+      if (!valid(nb)) return s_hit > 0.0 && s_hit < far_range;
+      // A farther return on the continuation of the same wall (a grazing wall whose returns are
+      // spaced more than break_distance) is no obstacle end either.
+      const double r_nb = scan.ranges[nb];
+      return !(s_hit > 0.0 && std::abs(s_hit - r_nb) < o.break_distance + 0.1 * r_nb);
     };
     if (len >= n) continue;  // one closed run around the robot: no ends
     if (silhouette(beam.front(), true))
