@@ -205,12 +205,17 @@ ExplorationResult run_exploration(const OccupancyGrid& world, const ExplorationO
     starts = place_team(*o.start);
   } else {
     const field::DistanceField df = field::distance_transform(blocked);
+    // Spots with at least 0.8 m clearance (less in cramped worlds: 70 % of the largest).
+    double most = 0.0;
+    for (std::size_t i = 0; i < blocked.size(); ++i)
+      if (blocked[i] == 0) most = std::max(most, df.distance_m(blocked.cell_at(i)));
+    const double need = std::min(0.8, 0.7 * most);
     std::vector<Cell> roomy;
     for (std::size_t i = 0; i < blocked.size(); ++i) {
       const Cell c = blocked.cell_at(i);
-      if (blocked[i] == 0 && df.distance_m(c) >= 0.8) roomy.push_back(c);
+      if (blocked[i] == 0 && df.distance_m(c) >= need && need > body) roomy.push_back(c);
     }
-    if (roomy.empty()) throw Error("run_exploration", 0, "no free spot with 0.8 m clearance");
+    if (roomy.empty()) throw Error("run_exploration", 0, "no free spot for a robot in the world");
     std::uniform_int_distribution<std::size_t> pick(0, roomy.size() - 1);
     for (int tries = 0; tries < 50; ++tries) {
       starts = place_team(g.cell_center(roomy[pick(rng)]));
