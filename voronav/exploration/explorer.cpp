@@ -116,6 +116,28 @@ std::vector<Vec2> descend(const BinaryGrid& g, const planning::BfsFlood& flood, 
   return {rev.rbegin(), rev.rend()};
 }
 
+// Coarser cells: a coarse cell is occupied if any of its cells is, else unknown if any is.
+OccupancyGrid resample(const OccupancyGrid& in, double min_cell) {
+  const double res = in.resolution();
+  const int k = static_cast<int>(std::floor(min_cell / res + 1e-9));
+  if (k < 2) return in;
+  GridGeometry g = in.geometry();
+  g.width = (g.width + k - 1) / k;
+  g.height = (g.height + k - 1) / k;
+  g.resolution = res * k;
+  OccupancyGrid out(g, kFree);
+  for (int y = 0; y < in.height(); ++y)
+    for (int x = 0; x < in.width(); ++x) {
+      const std::int8_t v = in[Cell{x, y}];
+      std::int8_t& o = out[Cell{x / k, y / k}];
+      if (v >= 50)
+        o = kOccupied;
+      else if (v < 0 && o != kOccupied)
+        o = kUnknown;
+    }
+  return out;
+}
+
 std::string num(double v) {
   if (!std::isfinite(v)) return "null";
   char buf[32];
@@ -160,6 +182,7 @@ void ExplorationOptions::validate() const {
   positive(record_period, "record_period");
   positive(replan_period, "replan_period");
   positive(goal_tolerance, "goal_tolerance");
+  positive(min_cell_size, "min_cell_size");
   if (!(tree_start_time >= 0.0) || !std::isfinite(tree_start_time))
     throw Error("ExplorationOptions.tree_start_time", 0, "expected a finite number >= 0");
   if (!(clearance >= 0.0)) throw Error("ExplorationOptions.clearance", 0, "expected >= 0");
@@ -174,9 +197,10 @@ void ExplorationOptions::validate() const {
   frontier.validate();
 }
 
-ExplorationResult run_exploration(const OccupancyGrid& world, const ExplorationOptions& o) {
+ExplorationResult run_exploration(const OccupancyGrid& world_in, const ExplorationOptions& o) {
   o.validate();
-  if (world.empty()) throw Error("run_exploration", 0, "the world map is empty");
+  if (world_in.empty()) throw Error("run_exploration", 0, "the world map is empty");
+  const OccupancyGrid world = resample(world_in, o.min_cell_size);
   const GridGeometry& g = world.geometry();
   const BinaryGrid blocked = binarize(world, {50, true});
   const double body = o.drive.body_radius;
@@ -505,6 +529,18 @@ ExplorationResult run_exploration(const OccupancyGrid& world, const ExplorationO
         }
       } else {
         cmd = a.controller.update(robot::cast_scan(blocked, pose, o.laser, others, &rng), o.dt);
+      }
+      a.body.command(cmd);
+      // Footprint safety (as a check of the scan points around the footprint would do): a
+      // command that would touch an obstacle within the next few steps becomes a turn on the spot.
+      if (cmd.v != 0.0) {
+        const double ahead = std::copysign(std::min(0.1, std::abs(cmd.v) * 3.0 * o.dt), cmd.v);
+        const Vec2 next = pose.position + Vec2{std::cos(pose.yaw), std::sin(pose.yaw)} * ahead;
+        if (robot::disc_collides(blocked, next, body + 0.01, others)) {
+          cmd.v = 0.0;
+          if (cmd.omega == 0.0) cmd.omega = o.controller.obs_avoid;
+          a.blocked_time += o.dt;
+        }
       }
       a.body.command(cmd);
       a.body.step(o.dt, blocked, others);

@@ -50,6 +50,9 @@ struct ExplorationOptions {
   double replan_period = 2.0;      ///< [s] frontier targets are re-assigned this often
   double goal_tolerance = 0.3;     ///< [m] a waypoint or goal counts as reached
   double clearance = 0.1;          ///< [m] added to the body radius when planning paths
+  /// [m] worlds with finer cells are resampled to cells of about this size (a coarse cell is
+  /// occupied when any of its cells is); keeps 16-robot runs on 50 m maps fast.
+  double min_cell_size = 0.1;
   robot::DiffDriveOptions drive;
   robot::LaserOptions laser;
   robot::ReactiveControllerOptions controller;
@@ -94,7 +97,9 @@ struct ExplorationResult {
   ExplorationRecording recording;
 };
 
-/// Runs one exploration. `world`: ground truth (>= 50 occupied; unknown counts as occupied).
+/// Runs one exploration. `world`: ground truth (>= 50 occupied; unknown counts as occupied),
+/// resampled to options.min_cell_size (the recording has the resampled geometry).
+/// resampled to options.min_cell_size; the recording's geometry is the resampled one.
 /// Throws voronav::Error for invalid options, an empty world, or a start that is not free.
 [[nodiscard]] ExplorationResult run_exploration(const OccupancyGrid& world,
                                                 const ExplorationOptions& options = {});

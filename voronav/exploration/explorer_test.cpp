@@ -98,6 +98,24 @@ TEST(Explorer, BadInputIsAnError) {
   EXPECT_THROW((void)paper_world(0.0), Error);
 }
 
+TEST(Explorer, FineWorldsAreResampled) {
+  // The 0.05 m paper world runs on 0.1 m cells: the recording has the coarse geometry and the
+  // reachable free area is (about) the same 20 x 20 m minus obstacles.
+  ExplorationOptions o = quick(ExplorationMethod::kCoordinated, 1, 5);
+  const ExplorationResult fine = run_exploration(paper_world(0.05), o);
+  const ExplorationResult coarse = run_exploration(world(), o);
+  EXPECT_DOUBLE_EQ(fine.recording.geometry.resolution, 0.1);
+  EXPECT_EQ(fine.recording.geometry.width, 200);
+  // A coarse cell is blocked when any fine cell is: slightly less free area than drawing at 0.1.
+  EXPECT_LE(fine.reachable_free_cells, coarse.reachable_free_cells);
+  EXPECT_GT(fine.reachable_free_cells, coarse.reachable_free_cells * 99 / 100);
+  o.min_cell_size = 0.05;
+  const ExplorationResult kept = run_exploration(paper_world(0.05), o);
+  EXPECT_DOUBLE_EQ(kept.recording.geometry.resolution, 0.05);
+  EXPECT_NEAR(static_cast<double>(kept.reachable_free_cells) * 0.0025,
+              static_cast<double>(coarse.reachable_free_cells) * 0.01, 0.03 * 400);
+}
+
 TEST(Explorer, JsonHasTheDocumentedFields) {
   ExplorationResult r;
   r.coverage = 0.5;
