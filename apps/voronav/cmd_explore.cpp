@@ -25,6 +25,7 @@ struct ExploreArgs {
   std::string start;
   std::filesystem::path out;
   double stop_at = 1.01;
+  int picture_px = 900;
   bool json = false;
 };
 
@@ -48,17 +49,20 @@ void draw_trajectories(render::Figure& fig, const exploration::ExplorationResult
   }
 }
 
+// `world`: the resampled ground truth (same geometry as the recording).
 void save_pictures(const OccupancyGrid& world, const exploration::ExplorationResult& r,
-                   const std::filesystem::path& dir) {
+                   const std::filesystem::path& dir, int side_px) {
   {
-    render::Figure fig(world.geometry(), {.title = "explore: team map and trajectories (" +
+    render::Figure fig(world.geometry(), {.auto_side_px = side_px,
+                                          .title = "explore: team map and trajectories (" +
                                                    std::string(to_string(r.method)) + ")"});
     fig.occupancy(r.recording.team_map);
     draw_trajectories(fig, r);
     fig.save(dir / "explore.png");
   }
   if (r.method != exploration::ExplorationMethod::kTree) return;
-  render::Figure fig(world.geometry(), {.title = "feature points, Voronoi tree and routes"});
+  render::Figure fig(world.geometry(),
+                     {.auto_side_px = side_px, .title = "feature points, Voronoi tree and routes"});
   fig.occupancy(world);
   for (const auto& p : r.recording.feature_points)
     fig.point(p.position, render::colors::kRed, 2.5);
@@ -109,7 +113,7 @@ void run(const ExploreArgs& a) {
     std::ofstream f(a.out / "exploration.json");
     if (!f) throw Error((a.out / "exploration.json").string(), 0, "cannot write");
     f << exploration::to_json(r, true) << "\n";
-    save_pictures(world, r, a.out);
+    save_pictures(exploration::resample_world(world, o.min_cell_size), r, a.out, a.picture_px);
   }
   if (a.json) {
     print_json(nlohmann::json::parse(exploration::to_json(r, false)));
@@ -157,6 +161,9 @@ void setup(CLI::App& app) {
                   "Stop when the coverage reaches this fraction (default: run the full time)");
   cmd->add_option("--out", args->out,
                   "Folder for exploration.json (with the recording), explore.png and tree.png");
+  cmd->add_option("--picture-px", args->picture_px, "Larger side of the pictures [px]")
+      ->check(CLI::Range(100, 4000))
+      ->capture_default_str();
   cmd->add_flag("--json", args->json,
                 "JSON output: coverage, t90_s, t99_s (null if not reached), distance_m, "
                 "collisions, overlap, feature_points, leaves, ...");

@@ -116,28 +116,6 @@ std::vector<Vec2> descend(const BinaryGrid& g, const planning::BfsFlood& flood, 
   return {rev.rbegin(), rev.rend()};
 }
 
-// Coarser cells: a coarse cell is occupied if any of its cells is, else unknown if any is.
-OccupancyGrid resample(const OccupancyGrid& in, double min_cell) {
-  const double res = in.resolution();
-  const int k = static_cast<int>(std::floor(min_cell / res + 1e-9));
-  if (k < 2) return in;
-  GridGeometry g = in.geometry();
-  g.width = (g.width + k - 1) / k;
-  g.height = (g.height + k - 1) / k;
-  g.resolution = res * k;
-  OccupancyGrid out(g, kFree);
-  for (int y = 0; y < in.height(); ++y)
-    for (int x = 0; x < in.width(); ++x) {
-      const std::int8_t v = in[Cell{x, y}];
-      std::int8_t& o = out[Cell{x / k, y / k}];
-      if (v >= 50)
-        o = kOccupied;
-      else if (v < 0 && o != kOccupied)
-        o = kUnknown;
-    }
-  return out;
-}
-
 std::string num(double v) {
   if (!std::isfinite(v)) return "null";
   char buf[32];
@@ -197,10 +175,34 @@ void ExplorationOptions::validate() const {
   frontier.validate();
 }
 
+// Coarser cells: a coarse cell is occupied if any of its cells is, else unknown if any is.
+OccupancyGrid resample_world(const OccupancyGrid& in, double min_cell) {
+  if (!(min_cell > 0.0) || !std::isfinite(min_cell))
+    throw Error("resample_world", 0, "min_cell must be a positive finite size [m]");
+  const double res = in.resolution();
+  const int k = static_cast<int>(std::floor(min_cell / res + 1e-9));
+  if (k < 2) return in;
+  GridGeometry g = in.geometry();
+  g.width = (g.width + k - 1) / k;
+  g.height = (g.height + k - 1) / k;
+  g.resolution = res * k;
+  OccupancyGrid out(g, kFree);
+  for (int y = 0; y < in.height(); ++y)
+    for (int x = 0; x < in.width(); ++x) {
+      const std::int8_t v = in[Cell{x, y}];
+      std::int8_t& o = out[Cell{x / k, y / k}];
+      if (v >= 50)
+        o = kOccupied;
+      else if (v < 0 && o != kOccupied)
+        o = kUnknown;
+    }
+  return out;
+}
+
 ExplorationResult run_exploration(const OccupancyGrid& world_in, const ExplorationOptions& o) {
   o.validate();
   if (world_in.empty()) throw Error("run_exploration", 0, "the world map is empty");
-  const OccupancyGrid world = resample(world_in, o.min_cell_size);
+  const OccupancyGrid world = resample_world(world_in, o.min_cell_size);
   const GridGeometry& g = world.geometry();
   const BinaryGrid blocked = binarize(world, {50, true});
   const double body = o.drive.body_radius;

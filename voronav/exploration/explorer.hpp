@@ -104,6 +104,11 @@ struct ExplorationResult {
 [[nodiscard]] ExplorationResult run_exploration(const OccupancyGrid& world,
                                                 const ExplorationOptions& options = {});
 
+/// The world as the runner sees it: cells finer than min_cell_size [m] are merged k x k
+/// (k = floor(min_cell_size / resolution)); a coarse cell is occupied when any of its cells is,
+/// else unknown when any is. Returns the input when k < 2.
+[[nodiscard]] OccupancyGrid resample_world(const OccupancyGrid& world, double min_cell_size);
+
 /// JSON of the result: coverage, t90_s, t99_s (null if not reached), distance_m, collisions,
 /// feature_points, leaves, ... With `include_recording`, the recording too (frames, features,
 /// tree nodes, routes; not the maps).
