@@ -7,6 +7,7 @@
 #include "command.hpp"
 #include "plan_picture.hpp"
 #include "voronav/planning/planner_factory.hpp"
+#include "voronav/topology/topo_planner.hpp"
 
 namespace voronav::cli {
 namespace {
@@ -32,7 +33,10 @@ void run(const PlanArgs& a) {
   opt.robot_radius = a.radius;
   opt.record_expanded = a.show_expanded;
   const BinaryGrid grid = planning::make_planning_grid(binarize(ctx.map.grid), a.radius);
-  auto planner = planning::make_planner(planning::parse_planner_kind(a.planner), opt);
+  // "topo": A* over the topological graph (seed 003), expanded to a grid path through the doors.
+  std::unique_ptr<planning::GridPlanner> planner =
+      a.planner == "topo" ? std::make_unique<topology::TopologicalPlanner>(opt)
+                          : planning::make_planner(planning::parse_planner_kind(a.planner), opt);
   const planning::PlanResult r = planner->plan(grid, start, goal);
 
   const double res = ctx.map.grid.resolution();
@@ -81,7 +85,7 @@ void setup(CLI::App& app) {
                   "metres in the world frame for ROS and image maps (see --cells)")
       ->required();
   cmd->add_option("--goal", args->goal, "Goal X,Y, same frame as --start")->required();
-  cmd->add_option("--planner", args->planner, "astar | dijkstra")->capture_default_str();
+  cmd->add_option("--planner", args->planner, "astar | dijkstra | topo")->capture_default_str();
   cmd->add_option("--connectivity", args->connectivity, "4 or 8 neighbours")
       ->check(CLI::IsMember({4, 8}))
       ->capture_default_str();

@@ -1,0 +1,155 @@
+// voronav topo: the topological map of a map file (seed 003): one picture per stage like the
+// paper's figure 8 (a) binary map, (b) edges, (c) labeled Voronoi diagram, (d) critical points and
+// lines, (e) topological regions, (f) topological graph, plus topology.json; optionally the
+// segmentation scores against a ground-truth room image.
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "command.hpp"
+#include "topo_pictures.hpp"
+#include "voronav/core/error.hpp"
+#include "voronav/io/map_loader.hpp"
+#include "voronav/render/figure.hpp"
+#include "voronav/topology/segmentation.hpp"
+#include "voronav/topology/topological_map.hpp"
+#include "voronav/voronoi/labeled_voronoi.hpp"
+
+namespace voronav::cli {
+namespace {
+
+struct TopoArgs {
+  std::filesystem::path map, out, ground_truth;
+  std::string method = "edt";
+  int free_from = 250;
+  double min_region_area = 1.0;
+  bool json = false;
+};
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void run(const TopoArgs& a) {
+  if (a.method != "edt" && a.method != "ca")
+    throw Error("--method", 0, "expected edt or ca, got '" + a.method + "'");
+  io::FloorplanOptions fo;
+  fo.occupied_below = a.free_from;
+  fo.free_from = a.free_from;
+  const io::LoadedMap loaded = io::load_map(a.map, fo);
+  const BinaryGrid blocked = binarize(loaded.grid);
+  topology::TopologyOptions opt;
+  opt.method = a.method == "ca" ? topology::DiagramMethod::kCellularAutomaton
+                                : topology::DiagramMethod::kEdt;
+  opt.min_region_area = a.min_region_area;
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t c0 = std::clock();
+  const topology::TopologicalMap m = topology::build_topological_map(blocked, opt);
+  const double build_ms = ms_since(t0);
+  const double cpu_ms = 1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+  const GridGeometry& geo = m.geometry;
+
+  nlohmann::json j;
+  j["map"] = a.map.string();
+  j["method"] = a.method;
+  j["width"] = geo.width;
+  j["height"] = geo.height;
+  j["resolution"] = geo.resolution;
+  j["time_ms"] = build_ms;
+  j["cpu_ms"] = cpu_ms;
+  std::size_t diagram_cells = 0;
+  for (const auto v : m.diagram.values())
+    diagram_cells += v != 0;
+  j["voronoi_cells"] = diagram_cells;
+  nlohmann::json cps = nlohmann::json::array();
+  for (const auto& cp : m.critical_points) {
+    const Vec2 w = geo.cell_center(cp.cell);
+    cps.push_back({{"cell", {cp.cell.x, cp.cell.y}},
+                   {"world", {w.x, w.y}},
+                   {"clearance_m", cp.clearance_m},
+                   {"basis", {{cp.basis[0].x, cp.basis[0].y}, {cp.basis[1].x, cp.basis[1].y}}},
+                   {"separates", cp.separates}});
+  }
+  j["critical_points"] = cps;
+  j["regions"] = m.regions.size();
+  nlohmann::json nodes = nlohmann::json::array(), edges = nlohmann::json::array();
+  for (const auto& r : m.regions)
+    nodes.push_back({{"id", r.id},
+                     {"cell", {r.centre.x, r.centre.y}},
+                     {"world", {r.centre_world.x, r.centre_world.y}},
+                     {"area_m2", r.area_m2}});
+  for (const auto& e : m.edges)
+    edges.push_back(
+        {{"a", e.a}, {"b", e.b}, {"length_m", e.length_m}, {"critical_point", e.critical_point}});
+  j["graph"] = {{"nodes", nodes}, {"edges", edges}};
+  if (!a.ground_truth.empty()) {
+    const OccupancyGrid gt = io::load_map(a.ground_truth, fo).grid;
+    if (gt.width() != geo.width || gt.height() != geo.height)
+      throw Error(a.ground_truth.string(), 0, "the ground truth differs in size from the map");
+    // Ground-truth rooms smaller than the region merge area are specks, not rooms.
+    const auto min_cells =
+        static_cast<std::size_t>(a.min_region_area / (geo.resolution * geo.resolution));
+    const auto s =
+        topology::segmentation_scores(m.region, topology::free_components(binarize(gt)), min_cells);
+    j["segmentation"] = {{"recall", s.recall},
+                         {"precision", s.precision},
+                         {"rooms", s.rooms},
+                         {"regions", s.regions}};
+  }
+  if (!a.out.empty()) {
+    save_stages(loaded.grid, blocked, m, opt.gvd.border_is_blocked, a.out);
+    std::ofstream(a.out / "topology.json") << j.dump(2) << "\n";
+  }
+  if (a.json) {
+    print_json(j);
+    return;
+  }
+  std::cout << "map:             " << a.map.string() << " (" << geo.width << "x" << geo.height
+            << ", " << geo.resolution << " m)\n"
+            << "method:          " << a.method << "\n"
+            << "voronoi cells:   " << diagram_cells << "\n"
+            << "critical points: " << m.critical_points.size() << "\n"
+            << "regions:         " << m.regions.size() << "\n"
+            << "graph edges:     " << m.edges.size() << "\n"
+            << "time:            " << build_ms << " ms\n";
+  if (j.contains("segmentation"))
+    std::cout << "recall:          " << 100.0 * j["segmentation"]["recall"].get<double>() << " %\n"
+              << "precision:       " << 100.0 * j["segmentation"]["precision"].get<double>()
+              << " %\n";
+  if (!a.out.empty()) std::cout << "pictures:        " << a.out.string() << "/{a..f}_*.png\n";
+}
+
+void setup(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "topo", "Topological map (seed 003): Voronoi diagram, critical points, regions, graph");
+  auto args = std::make_shared<TopoArgs>();
+  cmd->add_option("--map", args->map, "Map file: ROS .yaml, Moving AI .map, floor plan .png/.pgm")
+      ->required();
+  cmd->add_option("--method", args->method,
+                  "edt (EDT-based generalized Voronoi) | ca (the paper's cellular automaton)")
+      ->capture_default_str();
+  cmd->add_option("--out", args->out,
+                  "Folder for the stage pictures a_binary .. f_graph.png and topology.json");
+  cmd->add_option("--ground-truth", args->ground_truth,
+                  "Ground-truth room image (white rooms): adds segmentation recall/precision");
+  cmd->add_option("--free-from", args->free_from,
+                  "Image maps: a pixel is free when its grey is >= this (0..255)")
+      ->check(CLI::Range(1, 255))
+      ->capture_default_str();
+  cmd->add_option("--min-region-area", args->min_region_area,
+                  "Regions smaller than this [m^2] are merged into a neighbour")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_flag("--json", args->json,
+                "JSON output: critical_points, regions (count), graph {nodes, edges}, time_ms, "
+                "segmentation");
+  cmd->callback([args] { run(*args); });
+}
+
+const Command reg{{"topo", setup, 40}};
+
+}  // namespace
+}  // namespace voronav::cli

@@ -1,0 +1,583 @@
+#include "voronav/coordination/priority_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <string>
+
+#include "voronav/core/error.hpp"
+
+namespace voronav::coordination {
+
+namespace {
+constexpr double kEps = 1e-9;
+
+std::vector<int> concat(const std::vector<int>& a, const std::vector<int>& b) {
+  std::vector<int> out(a);
+  out.insert(out.end(), b.begin(), b.end());
+  return out;
+}
+
+void check_split(const MdNetwork& net, const std::vector<int>& searched,
+                 const std::vector<int>& suffix) {
+  check_order(concat(searched, suffix), net.size());
+}
+
+/// c(i, j) of the EDF scheduler, summed over the boxes of i and j.
+double edf_cost(const MdNetwork& net, int i, int j, EdfCost kind) {
+  double c = 0.0;
+  for (const int k : net.incident(i)) {
+    const MdBox& b = net.boxes()[static_cast<std::size_t>(k)];
+    if (b.a != j && b.b != j) continue;
+    const auto [m, d] = net.oriented(k, j);
+    if (kind == EdfCost::kSharedTime) {
+      c += m + d;
+    } else if (m > kTimeEpsilon && d > kTimeEpsilon) {
+      c += d;
+    }
+  }
+  return c;
+}
+}  // namespace
+
+bool better(const Resolution& a, const Resolution& b) {
+  if (a.makespan < b.makespan - kEps) return true;
+  if (a.makespan > b.makespan + kEps) return false;
+  return a.sum_of_arrivals < b.sum_of_arrivals - kEps;
+}
+
+EdfResult bottom_level_edf(const MdNetwork& net, const EdfOptions& options) {
+  const int n = net.size();
+  EdfResult r;
+  for (const double t : net.travel_times())
+    r.deadline = std::max(r.deadline, t);
+  std::vector<int> ug(static_cast<std::size_t>(n));
+  std::iota(ug.begin(), ug.end(), 0);
+  std::vector<double> cost(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), 0.0);
+  for (int i = 0; i < n; ++i) {
+    for (const int k : net.incident(i)) {
+      const MdBox& b = net.boxes()[static_cast<std::size_t>(k)];
+      const int j = b.a == i ? b.b : b.a;
+      cost[static_cast<std::size_t>(i * n + j)] = edf_cost(net, i, j, options.cost);
+    }
+  }
+  while (!ug.empty()) {
+    EdfRound round;
+    round.urgent_group = ug;
+    round.completion.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::quiet_NaN());
+    int best = -1;
+    double best_slack = -kInfinity;
+    for (const int i : ug) {
+      double t = net.travel_times()[static_cast<std::size_t>(i)];
+      for (const int j : ug) {
+        if (j != i) t += cost[static_cast<std::size_t>(i * n + j)];
+      }
+      round.completion[static_cast<std::size_t>(i)] = t;
+      const double slack = r.deadline - t;
+      if (slack >= -kEps && slack > best_slack + kEps) {
+        best_slack = slack;
+        best = i;
+      }
+    }
+    round.removed = best;
+    r.rounds.push_back(round);
+    if (best < 0) break;
+    r.removal_order.push_back(best);
+    ug.erase(std::find(ug.begin(), ug.end(), best));
+  }
+  r.urgent_group = ug;
+  // Most urgent (smallest slack = largest completion) first.
+  std::vector<int> sorted = ug;
+  if (!r.rounds.empty()) {
+    const auto& last = r.rounds.back().completion;
+    std::stable_sort(sorted.begin(), sorted.end(), [&](int a, int b) {
+      return last[static_cast<std::size_t>(a)] > last[static_cast<std::size_t>(b)];
+    });
+  }
+  r.order = sorted;
+  for (auto it = r.removal_order.rbegin(); it != r.removal_order.rend(); ++it)
+    r.order.push_back(*it);
+  return r;
+}
+
+std::string_view to_string(SearchKind k) {
+  switch (k) {
+    case SearchKind::kNone:
+      return "none";
+    case SearchKind::kExhaustive:
+      return "exhaustive";
+    case SearchKind::kEdf:
+      return "edf";
+    case SearchKind::kGa:
+      return "ga";
+  }
+  return "?";
+}
+
+SearchKind parse_search_kind(std::string_view s) {
+  if (s == "none") return SearchKind::kNone;
+  if (s == "exhaustive") return SearchKind::kExhaustive;
+  if (s == "edf") return SearchKind::kEdf;
+  if (s == "ga") return SearchKind::kGa;
+  throw Error("--search", 0, "expected none|exhaustive|edf|ga, got '" + std::string(s) + "'");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Exhaustive search: depth-first over the orders of `searched`, with the delays of the placed
+// prefix kept incrementally, pruned by a lower bound on (makespan, sum of arrivals).
+
+namespace {
+
+struct Exhaustive {
+  const MdNetwork& net;
+  std::vector<int> searched;
+  std::vector<int> suffix;
+  std::vector<int> prefix;
+  std::vector<char> placed;
+  std::vector<double> delays;
+  Resolution best;
+  std::vector<int> best_order;
+  std::size_t evaluations = 0;
+  double suffix_travel_max = 0.0;
+  double suffix_travel_sum = 0.0;
+
+  /// The smallest delay of robot i against the placed robots; infinity if none exists.
+  double delay_of(int i) const {
+    double delay = 0.0;
+    bool changed = true;
+    while (changed) {
+      changed = false;
+      for (const int k : net.incident(i)) {
+        const MdBox& b = net.boxes()[static_cast<std::size_t>(k)];
+        const int j = b.a == i ? b.b : b.a;
+        if (!placed[static_cast<std::size_t>(j)]) continue;
+        const auto [m, d] = net.oriented(k, j, delays[static_cast<std::size_t>(j)], delay);
+        if (m > kTimeEpsilon && d > kTimeEpsilon) {
+          if (std::isinf(d)) return kInfinity;
+          delay += d;
+          changed = true;
+        }
+      }
+    }
+    return delay;
+  }
+
+  void dfs(double mk, double sum) {
+    if (prefix.size() == searched.size()) {
+      ++evaluations;
+      Resolution r = resolve(net, concat(prefix, suffix));
+      if (best_order.empty() || better(r, best)) {
+        best = std::move(r);
+        best_order = concat(prefix, suffix);
+      }
+      return;
+    }
+    double rest_max = suffix_travel_max, rest_sum = suffix_travel_sum;
+    for (const int i : searched) {
+      if (placed[static_cast<std::size_t>(i)]) continue;
+      rest_max = std::max(rest_max, net.travel_times()[static_cast<std::size_t>(i)]);
+      rest_sum += net.travel_times()[static_cast<std::size_t>(i)];
+    }
+    const double lb_mk = std::max(mk, rest_max);
+    if (!best_order.empty()) {
+      if (lb_mk > best.makespan + kEps) return;
+      if (lb_mk >= best.makespan - kEps && sum + rest_sum >= best.sum_of_arrivals - kEps) return;
+    }
+    for (const int i : searched) {
+      if (placed[static_cast<std::size_t>(i)]) continue;
+      const double d = delay_of(i);
+      if (std::isinf(d)) continue;
+      const double c = net.travel_times()[static_cast<std::size_t>(i)] + d;
+      placed[static_cast<std::size_t>(i)] = 1;
+      delays[static_cast<std::size_t>(i)] = d;
+      prefix.push_back(i);
+      dfs(std::max(mk, c), sum + c);
+      prefix.pop_back();
+      placed[static_cast<std::size_t>(i)] = 0;
+      delays[static_cast<std::size_t>(i)] = 0.0;
+    }
+  }
+};
+
+}  // namespace
+
+SearchResult exhaustive_search(const MdNetwork& net, const std::vector<int>& searched,
+                               const std::vector<int>& suffix) {
+  check_split(net, searched, suffix);
+  Exhaustive ex{net, searched, suffix, {}, {}, {}, {}, {}, 0, 0.0, 0.0};
+  ex.placed.assign(static_cast<std::size_t>(net.size()), 0);
+  ex.delays.assign(static_cast<std::size_t>(net.size()), 0.0);
+  for (const int i : suffix) {
+    ex.suffix_travel_max =
+        std::max(ex.suffix_travel_max, net.travel_times()[static_cast<std::size_t>(i)]);
+    ex.suffix_travel_sum += net.travel_times()[static_cast<std::size_t>(i)];
+  }
+  ex.dfs(0.0, 0.0);
+  SearchResult r;
+  if (ex.best_order.empty()) {  // every order is blocked: report the plain order's status
+    r.order = concat(searched, suffix);
+    r.resolution = resolve(net, r.order);
+  } else {
+    r.order = ex.best_order;
+    r.resolution = ex.best;
+  }
+  r.urgent_group = searched;
+  r.evaluations = std::max<std::size_t>(ex.evaluations, 1);
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Genetic algorithm (sections 4.2.2 and 5.1). Orders are sequences of local indices 0..n-1 into
+// `searched`; the suffix is appended for evaluation.
+
+namespace {
+
+class Ga {
+ public:
+  Ga(const MdNetwork& net, const std::vector<int>& searched, const std::vector<int>& suffix,
+     const GaOptions& o)
+      : net_(net),
+        searched_(searched),
+        suffix_(suffix),
+        o_(o),
+        rng_(o.seed),
+        n_(static_cast<int>(searched.size())) {
+    weight_.assign(static_cast<std::size_t>(n_ * n_), 0.0);
+    std::vector<int> local(static_cast<std::size_t>(net.size()), -1);
+    for (int a = 0; a < n_; ++a)
+      local[static_cast<std::size_t>(searched[static_cast<std::size_t>(a)])] = a;
+    for (const MdBox& b : net.boxes()) {
+      const int la = local[static_cast<std::size_t>(b.a)];
+      const int lb = local[static_cast<std::size_t>(b.b)];
+      if (la < 0 || lb < 0) continue;
+      const double k0 = std::isfinite(b.m + b.d) ? b.m + b.d : 1e9;
+      weight_[static_cast<std::size_t>(la * n_ + lb)] += k0;
+      weight_[static_cast<std::size_t>(lb * n_ + la)] += k0;
+    }
+  }
+
+  struct Individual {
+    std::vector<int> seq;
+    Resolution res;
+  };
+
+  Individual make(std::vector<int> seq) {
+    Individual ind{std::move(seq), {}};
+    ind.res = evaluate(ind.seq);
+    return ind;
+  }
+
+  Resolution evaluate(const std::vector<int>& seq) {
+    ++evaluations_;
+    std::vector<int> order;
+    order.reserve(seq.size() + suffix_.size());
+    for (const int l : seq)
+      order.push_back(searched_[static_cast<std::size_t>(l)]);
+    order.insert(order.end(), suffix_.begin(), suffix_.end());
+    return resolve(net_, order);
+  }
+
+  int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  double unit() { return std::uniform_real_distribution<double>(0.0, 1.0)(rng_); }
+
+  /// Greedy reconnection (DPX, section 4.2.2): chains fragments, always appending the fragment
+  /// whose head has the largest M + D with the current tail, avoiding forbidden edges when
+  /// possible. forbidden(a, b): edge a -> b must not be created; forbidden(-1, b): b must not be
+  /// first.
+  template <class Forbidden>
+  std::vector<int> reconnect(std::vector<std::vector<int>> frags, Forbidden forbidden) {
+    std::vector<int> out;
+    out.reserve(static_cast<std::size_t>(n_));
+    auto take = [&](std::size_t f) {
+      out.insert(out.end(), frags[f].begin(), frags[f].end());
+      frags.erase(frags.begin() + static_cast<std::ptrdiff_t>(f));
+    };
+    {
+      std::vector<std::size_t> cand;
+      for (std::size_t f = 0; f < frags.size(); ++f) {
+        if (!forbidden(-1, frags[f].front())) cand.push_back(f);
+      }
+      if (cand.empty()) {
+        for (std::size_t f = 0; f < frags.size(); ++f)
+          cand.push_back(f);
+      }
+      take(cand[static_cast<std::size_t>(uniform(0, static_cast<int>(cand.size()) - 1))]);
+    }
+    while (!frags.empty()) {
+      const int tail = out.back();
+      std::vector<std::size_t> cand;
+      double best_w = -1.0;
+      for (int pass = 0; pass < 2 && cand.empty(); ++pass) {
+        for (std::size_t f = 0; f < frags.size(); ++f) {
+          const int head = frags[f].front();
+          if (pass == 0 && forbidden(tail, head)) continue;
+          const double w = weight_[static_cast<std::size_t>(tail * n_ + head)];
+          if (w > best_w + kEps) {
+            best_w = w;
+            cand.assign(1, f);
+          } else if (w >= best_w - kEps) {
+            cand.push_back(f);
+          }
+        }
+      }
+      take(cand[static_cast<std::size_t>(uniform(0, static_cast<int>(cand.size()) - 1))]);
+    }
+    return out;
+  }
+
+  std::vector<int> successors(const std::vector<int>& seq) const {
+    std::vector<int> succ(static_cast<std::size_t>(n_) + 1, -2);
+    succ[static_cast<std::size_t>(n_)] = seq.front();  // virtual start node
+    for (std::size_t k = 0; k + 1 < seq.size(); ++k)
+      succ[static_cast<std::size_t>(seq[k])] = seq[k + 1];
+    succ[static_cast<std::size_t>(seq.back())] = -1;
+    return succ;
+  }
+
+  /// DPX: keep the edges common to both parents, reconnect greedily with edges of neither.
+  std::vector<int> dpx(const std::vector<int>& pa, const std::vector<int>& pb) {
+    const auto sa = successors(pa), sb = successors(pb);
+    std::vector<std::vector<int>> frags{{pa.front()}};
+    for (std::size_t k = 1; k < pa.size(); ++k) {
+      if (sb[static_cast<std::size_t>(pa[k - 1])] == pa[k]) {
+        frags.back().push_back(pa[k]);
+      } else {
+        frags.push_back({pa[k]});
+      }
+    }
+    auto forbidden = [&](int a, int b) {
+      const auto idx = static_cast<std::size_t>(a < 0 ? n_ : a);
+      return sa[idx] == b || sb[idx] == b;
+    };
+    return reconnect(std::move(frags), forbidden);
+  }
+
+  /// Removes 4..7 random edges and reconnects greedily without them.
+  std::vector<int> mutate(const std::vector<int>& seq) {
+    const int edges = n_ - 1;
+    if (edges < 1) return seq;
+    const int k = std::min(edges, uniform(o_.mutation_min_edges, o_.mutation_max_edges));
+    std::vector<int> pos(static_cast<std::size_t>(edges));
+    std::iota(pos.begin(), pos.end(), 0);
+    std::shuffle(pos.begin(), pos.end(), rng_);
+    std::vector<char> cut(static_cast<std::size_t>(edges), 0);
+    for (int i = 0; i < k; ++i)
+      cut[static_cast<std::size_t>(pos[static_cast<std::size_t>(i)])] = 1;
+    std::vector<std::vector<int>> frags{{seq.front()}};
+    std::vector<int> removed_succ(static_cast<std::size_t>(n_) + 1, -2);
+    removed_succ[static_cast<std::size_t>(n_)] = seq.front();
+    for (std::size_t e = 0; e + 1 < seq.size(); ++e) {
+      if (cut[e]) {
+        removed_succ[static_cast<std::size_t>(seq[e])] = seq[e + 1];
+        frags.push_back({seq[e + 1]});
+      } else {
+        frags.back().push_back(seq[e + 1]);
+      }
+    }
+    auto forbidden = [&](int a, int b) {
+      return removed_succ[static_cast<std::size_t>(a < 0 ? n_ : a)] == b;
+    };
+    return reconnect(std::move(frags), forbidden);
+  }
+
+  /// 3-opt for the asymmetric case: move a segment to another place without reversing it
+  /// (the only 3-opt move that keeps every edge's direction). First improvement, random moves.
+  void three_opt(Individual& ind) {
+    if (n_ < 3 || o_.three_opt_iterations < 0) return;
+    const int iters = o_.three_opt_iterations > 0 ? o_.three_opt_iterations : n_ * (n_ - 1);
+    std::vector<int> cand(static_cast<std::size_t>(n_));
+    for (int it = 0; it < iters; ++it) {
+      const int i = uniform(0, n_ - 1);
+      const int j = uniform(i, std::min(n_ - 1, i + uniform(0, n_ - 1)));
+      const int len = j - i + 1;
+      if (len >= n_) continue;
+      const int k = uniform(0, n_ - len);  // insertion position in the remaining sequence
+      if (k == i) continue;
+      std::vector<int> rest;
+      rest.reserve(static_cast<std::size_t>(n_ - len));
+      for (int p = 0; p < n_; ++p) {
+        if (p < i || p > j) rest.push_back(ind.seq[static_cast<std::size_t>(p)]);
+      }
+      cand.assign(rest.begin(), rest.begin() + k);
+      cand.insert(cand.end(), ind.seq.begin() + i, ind.seq.begin() + j + 1);
+      cand.insert(cand.end(), rest.begin() + k, rest.end());
+      Resolution r = evaluate(cand);
+      if (better(r, ind.res)) {
+        ind.seq = cand;
+        ind.res = std::move(r);
+      }
+    }
+  }
+
+  SearchResult run(const std::vector<int>& seed_order) {
+    SearchResult out;
+    out.urgent_group = searched_;
+    std::vector<int> seed_local;
+    if (!seed_order.empty()) {
+      std::vector<int> local(static_cast<std::size_t>(net_.size()), -1);
+      for (int a = 0; a < n_; ++a)
+        local[static_cast<std::size_t>(searched_[static_cast<std::size_t>(a)])] = a;
+      for (const int g : seed_order) {
+        if (g < 0 || g >= net_.size() || local[static_cast<std::size_t>(g)] < 0) {
+          throw Error("seed_order", 0, "robot " + std::to_string(g) + " is not searched");
+        }
+        seed_local.push_back(local[static_cast<std::size_t>(g)]);
+      }
+      if (static_cast<int>(seed_local.size()) != n_) {
+        throw Error("seed_order", 0, "expected an order of all searched robots");
+      }
+    }
+    const int pop_size = std::max(2, o_.population > 0 ? o_.population : n_);
+    std::vector<Individual> pop;
+    if (!seed_local.empty()) pop.push_back(make(seed_local));
+    std::vector<int> base(static_cast<std::size_t>(n_));
+    std::iota(base.begin(), base.end(), 0);
+    while (static_cast<int>(pop.size()) < pop_size) {
+      std::shuffle(base.begin(), base.end(), rng_);
+      pop.push_back(make(base));
+    }
+    auto by_quality = [](const Individual& a, const Individual& b) { return better(a.res, b.res); };
+    std::stable_sort(pop.begin(), pop.end(), by_quality);
+    double prev = pop.front().res.makespan;
+    const int elite = std::max(1, static_cast<int>(std::ceil(o_.elitism * pop_size)));
+    int crossovers = 0;
+    while (n_ >= 2 && out.rounds < o_.max_rounds) {
+      std::vector<Individual> children;
+      for (int c = 0; c < o_.crossovers_per_generation; ++c) {
+        const int a = uniform(0, pop_size - 1);
+        int b = uniform(0, pop_size - 2);
+        if (b >= a) ++b;
+        std::vector<int> child =
+            dpx(pop[static_cast<std::size_t>(a)].seq, pop[static_cast<std::size_t>(b)].seq);
+        if (unit() < o_.mutation_rate) child = mutate(child);
+        Individual ind = make(std::move(child));
+        three_opt(ind);
+        children.push_back(std::move(ind));
+        ++crossovers;
+      }
+      ++out.generations;
+      // Elitism: the best `elite` survive; the other places go to the best of the rest and the
+      // children, without duplicates.
+      std::vector<Individual> next(pop.begin(), pop.begin() + elite);
+      std::vector<Individual> pool(pop.begin() + elite, pop.end());
+      for (auto& ch : children)
+        pool.push_back(std::move(ch));
+      std::stable_sort(pool.begin(), pool.end(), by_quality);
+      for (auto& ind : pool) {
+        if (static_cast<int>(next.size()) >= pop_size) break;
+        const bool dup = std::any_of(next.begin(), next.end(),
+                                     [&](const Individual& x) { return x.seq == ind.seq; });
+        if (!dup) next.push_back(std::move(ind));
+      }
+      while (static_cast<int>(next.size()) < pop_size) {  // refill with random orders
+        std::shuffle(base.begin(), base.end(), rng_);
+        next.push_back(make(base));
+      }
+      std::stable_sort(next.begin(), next.end(), by_quality);
+      pop = std::move(next);
+      if (crossovers % std::max(1, o_.crossovers_per_round) < o_.crossovers_per_generation) {
+        ++out.rounds;
+        const double cur = pop.front().res.makespan;
+        out.best_per_round.push_back(cur);
+        const bool both_finite = std::isfinite(cur) && std::isfinite(prev);
+        const double change =
+            both_finite ? std::abs(prev - cur) / std::max(std::abs(prev), kEps) : 1.0;
+        prev = cur;
+        if (both_finite && change < o_.convergence) break;
+      }
+    }
+    const Individual& best = pop.front();
+    for (const int l : best.seq)
+      out.order.push_back(searched_[static_cast<std::size_t>(l)]);
+    out.order.insert(out.order.end(), suffix_.begin(), suffix_.end());
+    out.resolution = best.res;
+    out.evaluations = evaluations_;
+    return out;
+  }
+
+ private:
+  const MdNetwork& net_;
+  const std::vector<int>& searched_;
+  const std::vector<int>& suffix_;
+  GaOptions o_;
+  std::mt19937_64 rng_;
+  int n_;
+  std::vector<double> weight_;
+  std::size_t evaluations_ = 0;
+};
+
+void check_ga_options(const GaOptions& o) {
+  auto bad = [](const char* what, const std::string& why) { throw Error(what, 0, why); };
+  if (o.crossovers_per_generation < 1) bad("crossovers_per_generation", "expected >= 1");
+  if (o.crossovers_per_round < 1) bad("crossovers_per_round", "expected >= 1");
+  if (!(o.mutation_rate >= 0.0 && o.mutation_rate <= 1.0)) bad("mutation_rate", "expected [0, 1]");
+  if (!(o.elitism >= 0.0 && o.elitism <= 1.0)) bad("elitism", "expected [0, 1]");
+  if (o.mutation_min_edges < 1 || o.mutation_max_edges < o.mutation_min_edges) {
+    bad("mutation_edges", "expected 1 <= min <= max");
+  }
+  if (!(o.convergence >= 0.0)) bad("convergence", "expected >= 0");
+  if (o.max_rounds < 1) bad("max_rounds", "expected >= 1");
+}
+
+}  // namespace
+
+SearchResult genetic_search(const MdNetwork& net, const std::vector<int>& searched,
+                            const std::vector<int>& suffix, const std::vector<int>& seed_order,
+                            const GaOptions& options) {
+  check_split(net, searched, suffix);
+  check_ga_options(options);
+  if (searched.size() <= 1) {
+    SearchResult r;
+    r.order = concat(searched, suffix);
+    r.resolution = resolve(net, r.order);
+    r.urgent_group = searched;
+    r.evaluations = 1;
+    return r;
+  }
+  Ga ga(net, searched, suffix, options);
+  return ga.run(seed_order);
+}
+
+SearchResult search_priority(const MdNetwork& net, const SearchOptions& options) {
+  const int n = net.size();
+  if (options.kind == SearchKind::kNone) {
+    SearchResult r;
+    r.order.resize(static_cast<std::size_t>(n));
+    std::iota(r.order.begin(), r.order.end(), 0);
+    r.resolution = resolve(net, r.order);
+    r.evaluations = 1;
+    return r;
+  }
+  std::vector<int> searched, suffix;
+  EdfResult edf = bottom_level_edf(net, options.edf);
+  if (options.edf_reduction) {
+    searched.assign(edf.order.begin(),
+                    edf.order.begin() + static_cast<std::ptrdiff_t>(edf.urgent_group.size()));
+    suffix.assign(edf.order.begin() + static_cast<std::ptrdiff_t>(edf.urgent_group.size()),
+                  edf.order.end());
+  } else {
+    searched = edf.order;
+  }
+  if (options.kind == SearchKind::kEdf) {
+    SearchResult r;
+    r.order = edf.order;
+    r.resolution = resolve(net, r.order);
+    r.urgent_group = edf.urgent_group;
+    r.evaluations = 1;
+    return r;
+  }
+  if (options.kind == SearchKind::kExhaustive) {
+    if (static_cast<int>(searched.size()) > options.exhaustive_max) {
+      throw Error("--search", 0,
+                  "exhaustive search over " + std::to_string(searched.size()) +
+                      " robots is too large (limit " + std::to_string(options.exhaustive_max) +
+                      "); use ga");
+    }
+    return exhaustive_search(net, searched, suffix);
+  }
+  return genetic_search(net, searched, suffix, searched, options.ga);
+}
+
+}  // namespace voronav::coordination

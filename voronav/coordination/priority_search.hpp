@@ -1,0 +1,116 @@
+// Priority search for the (M,D) network, seed 002 section 4: the objective J = max T^completed
+// (eq. 8) over priority orders, which is a dynamic asymmetric TSP (eq. 10).
+//  - bottom_level_edf(): the search-space reduction of section 4.1 (eq. 11, Table 4).
+//  - exhaustive_search(): every order of the urgent group (branch and bound on the makespan).
+//  - genetic_search(): GA with DPX crossover and greedy reconnection by the largest M + D,
+//    mutation removing 4..7 edges, 3-opt local search, elitism and the convergence rule of
+//    sections 4.2 and 5.1, all parameters in GaOptions, seeded.
+// Orders are compared by (makespan, sum of arrivals), so that among orders with the same makespan
+// the one that lets the others arrive earlier wins (the paper only names the makespan).
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "voronav/coordination/md_network.hpp"
+
+namespace voronav::coordination {
+
+/// One round of the Bottom-level EDF scheduler (a row of Table 4).
+struct EdfRound {
+  std::vector<double> completion;  ///< T^completed per robot (NaN when already removed)
+  std::vector<int> urgent_group;   ///< UG at the start of the round
+  int removed = -1;                ///< robot placed at the bottom in this round (-1: none)
+};
+
+struct EdfResult {
+  double deadline = 0.0;           ///< E = max T^traveled
+  std::vector<int> removal_order;  ///< robots in the order they were placed at the bottom
+  std::vector<int> urgent_group;   ///< robots left in UG (the reduced search space)
+  std::vector<EdfRound> rounds;
+  /// A full order: UG by increasing slack (most urgent first), then the removed robots, the first
+  /// removed last.
+  std::vector<int> order;
+};
+
+/// What the EDF scheduler counts as the cost of an arc between robot i and a UG robot j. The paper
+/// says "the sum of all arc costs (delay time and slack time)"; two readings fit its Table 4:
+enum class EdfCost {
+  /// k0 = M + D, the time both robots spend in the box (delay + slack). Symmetric; with it Table 4
+  /// leaves one parameter fewer free (A2's 80 s is predicted) and figure 17's urgent fraction is
+  /// reproduced. Default.
+  kSharedTime,
+  /// max(0, D) with i below j: the delay i would get at the bottom (order-dependent).
+  kDelay,
+};
+
+struct EdfOptions {
+  EdfCost cost = EdfCost::kSharedTime;
+};
+
+/// Bottom-level EDF (seed 002, section 4.1, eq. 11): deadline E = max T^traveled; T^delayed of
+/// robot i = sum of the arc costs between i and the UG robots; repeatedly the robot with the
+/// largest non-negative slack S = E - T^completed goes to the bottom and leaves UG.
+[[nodiscard]] EdfResult bottom_level_edf(const MdNetwork& net, const EdfOptions& options = {});
+
+enum class SearchKind { kNone, kExhaustive, kEdf, kGa };
+[[nodiscard]] std::string_view to_string(SearchKind k);
+/// Parses "none", "exhaustive", "edf", "ga"; throws voronav::Error otherwise.
+[[nodiscard]] SearchKind parse_search_kind(std::string_view s);
+
+/// Genetic algorithm parameters; defaults are the paper's (section 5.1, 5.2.2).
+struct GaOptions {
+  std::uint64_t seed = 1;
+  int crossovers_per_generation = 10;
+  int crossovers_per_round = 20;  ///< convergence is checked after this many crossovers
+  double mutation_rate = 0.2;     ///< probability that a child is mutated
+  int mutation_min_edges = 4;     ///< mutation removes a random number of edges in
+  int mutation_max_edges = 7;     ///< [min, max] and reconnects greedily
+  double elitism = 0.2;           ///< fraction of the best orders always kept
+  double convergence = 1e-4;      ///< stop when the best makespan changes less (relative)
+  int max_rounds = 50;            ///< hard limit on rounds
+  /// Population size; 0 = the number of robots searched (the paper's "N random orders").
+  int population = 0;
+  /// 3-opt attempts per child; 0 = N (N - 1) as in the paper; < 0 disables 3-opt.
+  int three_opt_iterations = 0;
+};
+
+struct SearchOptions {
+  SearchKind kind = SearchKind::kGa;
+  /// Search only the EDF urgent group (the paper's reduction); false searches all robots.
+  bool edf_reduction = true;
+  /// Exhaustive search refuses more robots than this (N! orders).
+  int exhaustive_max = 10;
+  EdfOptions edf;
+  GaOptions ga;
+};
+
+struct SearchResult {
+  std::vector<int> order;  ///< highest priority first
+  Resolution resolution;
+  std::vector<int> urgent_group;       ///< the robots that were searched
+  std::size_t evaluations = 0;         ///< orders resolved
+  int rounds = 0;                      ///< GA rounds until convergence
+  int generations = 0;                 ///< GA generations
+  std::vector<double> best_per_round;  ///< GA best makespan after each round
+};
+
+/// True when (makespan, sum_of_arrivals) of a is better than b (with a 1e-9 tolerance).
+[[nodiscard]] bool better(const Resolution& a, const Resolution& b);
+
+/// Runs the search selected by options.kind. kNone keeps the index order; kEdf returns
+/// EdfResult::order. Throws voronav::Error when exhaustive search is asked for too many robots.
+[[nodiscard]] SearchResult search_priority(const MdNetwork& net, const SearchOptions& options = {});
+
+/// Exhaustive search over the orders of `searched` robots placed above `suffix` (branch and bound).
+[[nodiscard]] SearchResult exhaustive_search(const MdNetwork& net, const std::vector<int>& searched,
+                                             const std::vector<int>& suffix);
+/// GA over the orders of `searched` robots placed above `suffix`, seeded with `seed_order`
+/// (an order of `searched`; may be empty). Never returns an order worse than the seed.
+[[nodiscard]] SearchResult genetic_search(const MdNetwork& net, const std::vector<int>& searched,
+                                          const std::vector<int>& suffix,
+                                          const std::vector<int>& seed_order,
+                                          const GaOptions& options);
+
+}  // namespace voronav::coordination

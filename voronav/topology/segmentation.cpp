@@ -1,0 +1,78 @@
+#include "voronav/topology/segmentation.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+#include <vector>
+
+#include "voronav/core/error.hpp"
+
+namespace voronav::topology {
+
+GridMap<std::int32_t> free_components(const BinaryGrid& blocked) {
+  const GridGeometry& g = blocked.geometry();
+  GridMap<std::int32_t> out(g, -1);
+  std::int32_t n = 0;
+  std::vector<Cell> stack;
+  for (std::size_t i = 0; i < blocked.size(); ++i) {
+    if (blocked[i] || out[i] >= 0) continue;
+    out[i] = n;
+    stack.push_back(g.cell_at(i));
+    while (!stack.empty()) {
+      const Cell c = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 4; ++k) {
+        const Cell q = c + kNeighbours8[k];
+        if (!g.contains(q) || blocked[q] || out[q] >= 0) continue;
+        out[q] = n;
+        stack.push_back(q);
+      }
+    }
+    ++n;
+  }
+  return out;
+}
+
+SegmentationScores segmentation_scores(const GridMap<std::int32_t>& regions,
+                                       const GridMap<std::int32_t>& rooms,
+                                       std::size_t min_room_cells) {
+  if (regions.width() != rooms.width() || regions.height() != rooms.height())
+    throw Error("segmentation_scores", 0,
+                "the segmentation is " + std::to_string(regions.width()) + "x" +
+                    std::to_string(regions.height()) + " but the ground truth is " +
+                    std::to_string(rooms.width()) + "x" + std::to_string(rooms.height()));
+  std::unordered_map<std::int32_t, std::size_t> room_size;
+  for (std::size_t i = 0; i < rooms.size(); ++i)
+    if (rooms[i] >= 0) room_size[rooms[i]]++;
+  std::unordered_map<std::int32_t, std::size_t> room_area, region_area;
+  std::unordered_map<std::uint64_t, std::size_t> overlap;
+  auto key = [](std::int32_t a, std::int32_t b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+           static_cast<std::uint32_t>(b);
+  };
+  for (std::size_t i = 0; i < rooms.size(); ++i) {
+    const std::int32_t room = rooms[i], region = regions[i];
+    if (room < 0 || region < 0 || room_size[room] < min_room_cells) continue;
+    room_area[room]++;
+    region_area[region]++;
+    overlap[key(room, region)]++;
+  }
+  std::unordered_map<std::int32_t, std::size_t> best_room, best_region;
+  for (const auto& [k, n] : overlap) {
+    const auto room = static_cast<std::int32_t>(k >> 32);
+    const auto region = static_cast<std::int32_t>(k & 0xffffffffU);
+    best_room[room] = std::max(best_room[room], n);
+    best_region[region] = std::max(best_region[region], n);
+  }
+  SegmentationScores s;
+  s.rooms = static_cast<int>(room_area.size());
+  s.regions = static_cast<int>(region_area.size());
+  for (const auto& [room, a] : room_area)
+    s.recall += static_cast<double>(best_room[room]) / static_cast<double>(a);
+  for (const auto& [region, a] : region_area)
+    s.precision += static_cast<double>(best_region[region]) / static_cast<double>(a);
+  if (s.rooms > 0) s.recall /= s.rooms;
+  if (s.regions > 0) s.precision /= s.regions;
+  return s;
+}
+
+}  // namespace voronav::topology

@@ -1,0 +1,429 @@
+#include "voronav/topology/topological_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <queue>
+#include <string>
+
+#include "voronav/core/cell_iterators.hpp"
+#include "voronav/core/error.hpp"
+#include "voronav/voronoi/voronoi_graph.hpp"
+
+namespace voronav::topology {
+namespace {
+
+void check_options(const TopologyOptions& o) {
+  auto nonneg = [](const char* name, double v) {
+    if (!(v >= 0.0) || !std::isfinite(v))
+      throw Error(name, 0, "expected a finite number >= 0, got " + std::to_string(v));
+  };
+  nonneg("TopologyOptions.min_rise", o.min_rise);
+  nonneg("TopologyOptions.rise_ratio", o.rise_ratio);
+  nonneg("TopologyOptions.max_door_width", o.max_door_width);
+  nonneg("TopologyOptions.min_region_area", o.min_region_area);
+}
+
+double sq(Cell a, Cell b) {
+  const double dx = a.x - b.x, dy = a.y - b.y;
+  return dx * dx + dy * dy;
+}
+
+// Critical points along one Voronoi edge: plateaus of local minima with a sufficient rise on both
+// sides (see the header).
+void find_minima(const voronoi::VoronoiEdge& e, const GridMap<float>& clearance,
+                 double min_rise_cells, double rise_ratio, std::vector<Cell>* out) {
+  const std::size_t n = e.cells.size();
+  if (n < 3) return;
+  std::vector<double> v(n);
+  for (std::size_t i = 0; i < n; ++i)
+    v[i] = static_cast<double>(clearance[e.cells[i]]);
+  std::size_t i = 1;
+  while (i + 1 < n) {
+    if (!(v[i] < v[i - 1])) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j + 1 < n - 1 && v[j + 1] == v[i])
+      ++j;
+    const double m = v[i];
+    if (!(v[j + 1] > m)) {
+      i = j + 1;
+      continue;
+    }
+    const double need = m + std::max(min_rise_cells, rise_ratio * m);
+    auto rises = [&](std::ptrdiff_t from, std::ptrdiff_t step) {
+      for (std::ptrdiff_t k = from; k >= 0 && k < static_cast<std::ptrdiff_t>(n); k += step) {
+        const double x = v[static_cast<std::size_t>(k)];
+        if (x < m) return false;
+        if (x >= need) return true;
+      }
+      return false;
+    };
+    if (rises(static_cast<std::ptrdiff_t>(i) - 1, -1) &&
+        rises(static_cast<std::ptrdiff_t>(j) + 1, 1))
+      out->push_back(e.cells[(i + j) / 2]);
+    i = j + 1;
+  }
+}
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(static_cast<std::size_t>(n)) {
+    std::iota(parent.begin(), parent.end(), 0);
+  }
+  int find(int x) {
+    while (parent[static_cast<std::size_t>(x)] != x) {
+      parent[static_cast<std::size_t>(x)] =
+          parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+      x = parent[static_cast<std::size_t>(x)];
+    }
+    return x;
+  }
+};
+
+TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid& diagram,
+                          const TopologyOptions& o) {
+  const GridGeometry& geo = g.geometry;
+  const double res = geo.resolution;
+  TopologicalMap out{geo, g.blocked, diagram, g.clearance, {}, GridMap<std::int32_t>(geo, -1),
+                     {},  {}};
+  if (geo.empty()) return out;
+
+  // 1. Critical points along the Voronoi graph's edges.
+  const voronoi::VoronoiGraph graph = voronoi::build_voronoi_graph(diagram, g.clearance);
+  std::vector<Cell> minima;
+  for (const auto& e : graph.edges)
+    find_minima(e, g.clearance, o.min_rise / res, o.rise_ratio, &minima);
+  BinaryGrid cut(geo, 0);
+  for (const Cell p : minima) {
+    const double clear = static_cast<double>(g.clearance[p]);
+    if (!std::isfinite(clear)) continue;
+    if (o.max_door_width > 0.0 && 2.0 * clear * res > o.max_door_width) continue;
+    const Cell s1 = g.nearest_site[p];
+    if (s1 == voronoi::kNoSiteCell) continue;
+    // The other basis point: the neighbourhood site farthest from the first.
+    Cell s2 = s1;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const Cell q = p + Cell{dx, dy};
+        if (!geo.contains(q)) continue;
+        const Cell t = g.blocked[q] ? q : g.nearest_site[q];
+        if (t == voronoi::kNoSiteCell) continue;
+        if (sq(t, s1) > sq(s2, s1)) s2 = t;
+      }
+    if (sq(s1, s2) < 4.0) continue;  // not two separate obstacles
+    CriticalPoint cp;
+    cp.cell = p;
+    cp.basis = {s1, s2};
+    cp.clearance_m = clear * res;
+    const double mx = 0.5 * (s1.x + s2.x), my = 0.5 * (s1.y + s2.y);
+    double best = HUGE_VAL;
+    for_each_line_cell(s1, s2, [&](Cell c) {
+      if (!geo.contains(c) || g.blocked[c]) return;
+      cp.line.push_back(c);
+      cut[c] = 1;
+      const double d = (c.x - mx) * (c.x - mx) + (c.y - my) * (c.y - my);
+      if (d < best) {
+        best = d;
+        cp.midpoint = c;
+      }
+    });
+    if (cp.line.empty()) continue;
+    out.critical_points.push_back(std::move(cp));
+  }
+
+  // 2. Regions: 4-connected components of the free cells minus the critical lines.
+  GridMap<std::int32_t> comp(geo, -1);
+  int ncomp = 0;
+  std::vector<Cell> stack;
+  for (std::size_t i = 0; i < comp.size(); ++i) {
+    if (g.blocked[i] || cut[i] || comp[i] >= 0) continue;
+    comp[i] = ncomp;
+    stack.push_back(geo.cell_at(i));
+    while (!stack.empty()) {
+      const Cell c = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 4; ++k) {
+        const Cell q = c + kNeighbours8[k];
+        if (!geo.contains(q) || g.blocked[q] || cut[q] || comp[q] >= 0) continue;
+        comp[q] = ncomp;
+        stack.push_back(q);
+      }
+    }
+    ++ncomp;
+  }
+  // Sides of every critical line (the two most frequent components next to its cells).
+  std::vector<std::pair<int, int>> sides(out.critical_points.size(), {-1, -1});
+  std::map<std::pair<int, int>, double> shared;  // component pair -> shared line length
+  for (std::size_t k = 0; k < out.critical_points.size(); ++k) {
+    std::map<int, int> count;
+    for (const Cell c : out.critical_points[k].line)
+      for (int d = 0; d < 4; ++d) {
+        const Cell q = c + kNeighbours8[d];
+        if (geo.contains(q) && comp[q] >= 0) count[comp[q]]++;
+      }
+    if (count.size() < 2) continue;
+    std::vector<std::pair<int, int>> byc(count.begin(), count.end());
+    std::sort(byc.begin(), byc.end(), [](auto a, auto b) {
+      return a.second != b.second ? a.second > b.second : a.first < b.first;
+    });
+    sides[k] = {std::min(byc[0].first, byc[1].first), std::max(byc[0].first, byc[1].first)};
+    shared[sides[k]] += static_cast<double>(out.critical_points[k].line.size());
+  }
+  // 3. Merge rule: the smallest region under min_region_area goes into the neighbour sharing the
+  // most critical-line cells with it; repeat.
+  std::vector<double> area(static_cast<std::size_t>(ncomp), 0.0);
+  for (std::size_t i = 0; i < comp.size(); ++i)
+    if (comp[i] >= 0) area[static_cast<std::size_t>(comp[i])] += res * res;
+  UnionFind uf(ncomp);
+  const double min_area = o.min_region_area;
+  while (true) {
+    // Current adjacency between merged regions.
+    std::map<std::pair<int, int>, double> adj;
+    for (const auto& [pair, w] : shared) {
+      const int a = uf.find(pair.first), b = uf.find(pair.second);
+      if (a != b) adj[{std::min(a, b), std::max(a, b)}] += w;
+    }
+    int smallest = -1;
+    for (int r = 0; r < ncomp; ++r) {
+      if (uf.find(r) != r || area[static_cast<std::size_t>(r)] >= min_area) continue;
+      bool has_neighbour = false;
+      for (const auto& [pair, w] : adj)
+        has_neighbour |= pair.first == r || pair.second == r;
+      if (!has_neighbour) continue;
+      if (smallest < 0 ||
+          area[static_cast<std::size_t>(r)] < area[static_cast<std::size_t>(smallest)])
+        smallest = r;
+    }
+    if (smallest < 0) break;
+    int target = -1;
+    double best_w = -1.0;
+    for (const auto& [pair, w] : adj) {
+      if (pair.first != smallest && pair.second != smallest) continue;
+      const int other = pair.first == smallest ? pair.second : pair.first;
+      if (w > best_w || (w == best_w && other < target)) {
+        best_w = w;
+        target = other;
+      }
+    }
+    uf.parent[static_cast<std::size_t>(smallest)] = target;
+    area[static_cast<std::size_t>(target)] += area[static_cast<std::size_t>(smallest)];
+  }
+  // 4. Compact region ids in row-major order of first appearance.
+  std::vector<int> id_of(static_cast<std::size_t>(ncomp), -1);
+  int nregions = 0;
+  for (std::size_t i = 0; i < comp.size(); ++i) {
+    if (comp[i] < 0) continue;
+    const int root = uf.find(comp[i]);
+    if (id_of[static_cast<std::size_t>(root)] < 0)
+      id_of[static_cast<std::size_t>(root)] = nregions++;
+    out.region[i] = id_of[static_cast<std::size_t>(root)];
+  }
+  // Critical-line cells join the smallest adjacent region (passes until all are placed).
+  bool pending = true;
+  while (pending) {
+    pending = false;
+    bool progress = false;
+    for (std::size_t i = 0; i < comp.size(); ++i) {
+      if (!cut[i] || out.region[i] >= 0) continue;
+      const Cell c = geo.cell_at(i);
+      int best = -1;
+      for (int d = 0; d < 4; ++d) {
+        const Cell q = c + kNeighbours8[d];
+        if (!geo.contains(q) || out.region[q] < 0 || (cut[q] && out.region[q] < 0)) continue;
+        if (best < 0 || out.region[q] < best) best = out.region[q];
+      }
+      if (best >= 0) {
+        out.region[i] = best;
+        progress = true;
+      } else {
+        pending = true;
+      }
+    }
+    if (!progress) break;  // line cells enclosed by other line cells only: left out
+  }
+  // 5. Region statistics and centres.
+  out.regions.resize(static_cast<std::size_t>(nregions));
+  std::vector<double> sx(static_cast<std::size_t>(nregions), 0.0), sy(sx);
+  for (std::size_t i = 0; i < comp.size(); ++i) {
+    const int r = out.region[i];
+    if (r < 0) continue;
+    const Cell c = geo.cell_at(i);
+    auto& reg = out.regions[static_cast<std::size_t>(r)];
+    reg.id = r;
+    reg.cells++;
+    sx[static_cast<std::size_t>(r)] += c.x;
+    sy[static_cast<std::size_t>(r)] += c.y;
+  }
+  std::vector<double> best(static_cast<std::size_t>(nregions), HUGE_VAL);
+  for (std::size_t i = 0; i < comp.size(); ++i) {
+    const int r = out.region[i];
+    if (r < 0) continue;
+    const auto ru = static_cast<std::size_t>(r);
+    const Cell c = geo.cell_at(i);
+    const double n = static_cast<double>(out.regions[ru].cells);
+    const double d =
+        (c.x - sx[ru] / n) * (c.x - sx[ru] / n) + (c.y - sy[ru] / n) * (c.y - sy[ru] / n);
+    if (d < best[ru]) {
+      best[ru] = d;
+      out.regions[ru].centre = c;
+    }
+  }
+  for (auto& reg : out.regions) {
+    reg.area_m2 = static_cast<double>(reg.cells) * res * res;
+    reg.centre_world = geo.cell_center(reg.centre);
+  }
+  // 6. Graph edges: one per separating critical line.
+  for (std::size_t k = 0; k < out.critical_points.size(); ++k) {
+    CriticalPoint& cp = out.critical_points[k];
+    if (sides[k].first < 0) {
+      cp.separates = false;
+      continue;
+    }
+    const int a = id_of[static_cast<std::size_t>(uf.find(sides[k].first))];
+    const int b = id_of[static_cast<std::size_t>(uf.find(sides[k].second))];
+    cp.separates = a != b;
+    if (!cp.separates) continue;
+    const Vec2 m = geo.cell_center(cp.midpoint);
+    TopoEdge e;
+    e.a = std::min(a, b);
+    e.b = std::max(a, b);
+    e.critical_point = static_cast<int>(k);
+    e.length_m = distance(out.regions[static_cast<std::size_t>(e.a)].centre_world, m) +
+                 distance(m, out.regions[static_cast<std::size_t>(e.b)].centre_world);
+    out.edges.push_back(e);
+  }
+  return out;
+}
+
+}  // namespace
+
+TopologicalMap build_topological_map(const BinaryGrid& blocked, const BinaryGrid& diagram,
+                                     const TopologyOptions& options) {
+  check_options(options);
+  if (blocked.width() != diagram.width() || blocked.height() != diagram.height())
+    throw Error("build_topological_map", 0, "the map and the diagram differ in size");
+  const voronoi::GeneralizedVoronoi g = voronoi::build_gvd(blocked, options.gvd);
+  return build_from(g, diagram, options);
+}
+
+TopologicalMap build_topological_map(const BinaryGrid& blocked, const TopologyOptions& options) {
+  check_options(options);
+  voronoi::GeneralizedVoronoi g = voronoi::build_gvd(blocked, options.gvd);
+  if (options.method == DiagramMethod::kEdt) {
+    const BinaryGrid diagram = g.diagram;
+    return build_from(g, diagram, options);
+  }
+  voronoi::CaVoronoiOptions ca = options.ca;
+  ca.border_is_blocked = options.gvd.border_is_blocked;
+  const voronoi::LabeledVoronoi lv = voronoi::build_labeled_voronoi(blocked, ca);
+  // The CA diagram gets the same spur pruning as the EDT one.
+  BinaryGrid diagram = lv.diagram;
+  voronoi::prune_diagram(diagram, g.clearance, options.gvd);
+  return build_from(g, diagram, options);
+}
+
+TopoPlan plan_on_graph(const TopologicalMap& map, Cell start, Cell goal) {
+  TopoPlan plan;
+  const int rs = map.region_of(start), rg = map.region_of(goal);
+  if (rs < 0) {
+    plan.status = TopoPlanStatus::kStartBlocked;
+    return plan;
+  }
+  if (rg < 0) {
+    plan.status = TopoPlanStatus::kGoalBlocked;
+    return plan;
+  }
+  const GridGeometry& geo = map.geometry;
+  auto pos = [&](Cell c) { return geo.cell_center(c); };
+  const Vec2 goal_w = pos(goal);
+  // States: 0 = at the start; 1 + 2k + side = having crossed edge k into its a (0) or b (1) region.
+  const std::size_t ne = map.edges.size();
+  const std::size_t n = 1 + 2 * ne;
+  auto region_of_state = [&](std::size_t s) {
+    if (s == 0) return rs;
+    const TopoEdge& e = map.edges[(s - 1) / 2];
+    return (s - 1) % 2 == 0 ? e.a : e.b;
+  };
+  auto point_of_state = [&](std::size_t s) {
+    if (s == 0) return pos(start);
+    return pos(map.critical_points[static_cast<std::size_t>(map.edges[(s - 1) / 2].critical_point)]
+                   .midpoint);
+  };
+  // Incident edges per region.
+  std::vector<std::vector<std::size_t>> incident(map.regions.size());
+  for (std::size_t k = 0; k < ne; ++k) {
+    incident[static_cast<std::size_t>(map.edges[k].a)].push_back(k);
+    incident[static_cast<std::size_t>(map.edges[k].b)].push_back(k);
+  }
+  std::vector<double> gcost(n, HUGE_VAL);
+  std::vector<std::size_t> parent(n, n);
+  std::vector<char> closed(n, 0);
+  using Item = std::pair<double, std::size_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  gcost[0] = 0.0;
+  open.push({distance(pos(start), goal_w), 0});
+  std::size_t reached = n;
+  double best_total = HUGE_VAL;
+  while (!open.empty()) {
+    const auto [f, s] = open.top();
+    open.pop();
+    if (closed[s]) continue;
+    if (f >= best_total) break;
+    closed[s] = 1;
+    ++plan.expanded;
+    const int r = region_of_state(s);
+    const Vec2 p = point_of_state(s);
+    if (r == rg) {
+      const double total = gcost[s] + distance(p, goal_w);
+      if (total < best_total) {
+        best_total = total;
+        reached = s;
+      }
+      continue;  // the goal is in this region: no need to leave it
+    }
+    for (const std::size_t k : incident[static_cast<std::size_t>(r)]) {
+      const TopoEdge& e = map.edges[k];
+      const std::size_t t = 1 + 2 * k + (e.a == r ? 1 : 0);
+      if (closed[t]) continue;
+      const double g2 = gcost[s] + distance(p, point_of_state(t));
+      if (g2 < gcost[t]) {
+        gcost[t] = g2;
+        parent[t] = s;
+        open.push({g2 + distance(point_of_state(t), goal_w), t});
+      }
+    }
+  }
+  if (reached == n) {
+    plan.status = TopoPlanStatus::kUnreachable;
+    return plan;
+  }
+  std::vector<std::size_t> chain;
+  for (std::size_t s = reached; s != n; s = parent[s])
+    chain.push_back(s);
+  std::reverse(chain.begin(), chain.end());
+  plan.status = TopoPlanStatus::kOk;
+  plan.regions.push_back(rs);
+  plan.waypoints.push_back(start);
+  for (std::size_t k = 1; k < chain.size(); ++k) {
+    const std::size_t s = chain[k];
+    const int e = static_cast<int>((s - 1) / 2);
+    plan.edges.push_back(e);
+    plan.regions.push_back(region_of_state(s));
+    plan.waypoints.push_back(
+        map.critical_points[static_cast<std::size_t>(
+                                map.edges[static_cast<std::size_t>(e)].critical_point)]
+            .midpoint);
+    plan.graph_cost_m += map.edges[static_cast<std::size_t>(e)].length_m;
+  }
+  plan.waypoints.push_back(goal);
+  for (std::size_t k = 1; k < plan.waypoints.size(); ++k)
+    plan.waypoint_length_m += distance(pos(plan.waypoints[k - 1]), pos(plan.waypoints[k]));
+  return plan;
+}
+
+}  // namespace voronav::topology

@@ -1,0 +1,120 @@
+// Topological map from a binary grid (seed 003, sections III.3 and IV): critical points on the
+// Voronoi diagram, critical lines, topological regions, the topological graph, and planning on
+// that graph.
+//
+//  - critical point: a diagram cell inside a branch (not a junction or end) whose clearance is a
+//    local minimum along the diagram: walking along the diagram from it in both directions, the
+//    clearance rises by at least max(min_rise [m], rise_ratio * clearance) before it ever drops
+//    below the critical value (a door or a narrowing). A plateau of equal minima gives one point,
+//    its middle. Its two basis points are the nearest obstacle cell and the nearest obstacle cell
+//    on the other side (the site of a neighbour farthest from the first one).
+//  - critical line: the Bresenham segment between the two basis points.
+//  - regions: the free cells cut by the critical lines, 4-connected components; the cells of the
+//    lines join the smallest adjacent region. Merge rule: a region smaller than min_region_area
+//    [m^2] is merged into the neighbour it shares the most critical-line cells with (the smallest
+//    region first, repeated until none is left); a critical line whose two sides end up in the
+//    same region does not separate anything and is marked so.
+//  - graph: node = region centre (the region cell nearest its centroid), edge = a separating
+//    critical line between two regions, cost = centre -> line midpoint -> centre [m].
+//  - planning: A* on the graph (heuristic: straight distance between centres), expanded back to
+//    a metric path start -> midpoints of the crossed critical lines -> goal.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "voronav/core/grid_map.hpp"
+#include "voronav/core/occupancy.hpp"
+#include "voronav/voronoi/gvd.hpp"
+#include "voronav/voronoi/labeled_voronoi.hpp"
+
+namespace voronav::topology {
+
+enum class DiagramMethod : std::uint8_t {
+  kEdt,                ///< the EDT-based generalized Voronoi diagram (default)
+  kCellularAutomaton,  ///< the paper's labeled Voronoi diagram by cellular automaton
+};
+
+struct TopologyOptions {
+  DiagramMethod method = DiagramMethod::kEdt;
+  voronoi::GvdOptions gvd{};       ///< for kEdt (also the spur pruning of kCellularAutomaton)
+  voronoi::CaVoronoiOptions ca{};  ///< for kCellularAutomaton
+  /// A critical point needs the clearance to rise by max(min_rise [m], rise_ratio * its
+  /// clearance) on both sides along the diagram.
+  double min_rise = 0.1;
+  double rise_ratio = 0.25;
+  /// Critical points wider than this door width [m] (2 x clearance) are ignored; 0 = no limit.
+  double max_door_width = 0.0;
+  /// Regions smaller than this [m^2] are merged into a neighbour (see the file comment).
+  double min_region_area = 1.0;
+};
+
+struct CriticalPoint {
+  Cell cell;                  ///< on the diagram
+  std::array<Cell, 2> basis;  ///< the two nearest obstacle cells (may lie on the border ring)
+  double clearance_m = 0.0;   ///< distance from cell to basis[0] [m]
+  std::vector<Cell> line;     ///< free cells of the critical line (basis to basis)
+  Cell midpoint;              ///< the free line cell nearest the middle of the two basis points
+  bool separates = true;      ///< whether its two sides are different regions
+};
+
+struct Region {
+  int id = 0;
+  std::size_t cells = 0;
+  double area_m2 = 0.0;
+  Cell centre;        ///< region cell nearest the centroid
+  Vec2 centre_world;  ///< its world position [m]
+};
+
+struct TopoEdge {
+  int a = 0, b = 0;        ///< region ids
+  int critical_point = 0;  ///< index into critical_points
+  double length_m = 0.0;   ///< centre(a) -> midpoint -> centre(b) [m]
+};
+
+struct TopologicalMap {
+  GridGeometry geometry;
+  BinaryGrid blocked;
+  BinaryGrid diagram;        ///< the Voronoi diagram used (thinned, pruned)
+  GridMap<float> clearance;  ///< [cells]
+  std::vector<CriticalPoint> critical_points;
+  GridMap<std::int32_t> region;  ///< region id per free cell, -1 on obstacles
+  std::vector<Region> regions;
+  std::vector<TopoEdge> edges;
+
+  /// The region of a cell, -1 for blocked or outside cells.
+  [[nodiscard]] int region_of(Cell c) const { return geometry.contains(c) ? region[c] : -1; }
+};
+
+/// Builds the diagram with options.method, then the topological map. Throws voronav::Error for
+/// invalid options.
+[[nodiscard]] TopologicalMap build_topological_map(const BinaryGrid& blocked,
+                                                   const TopologyOptions& options = {});
+/// The topological map over a given one-cell-wide diagram (e.g. an incrementally updated one).
+[[nodiscard]] TopologicalMap build_topological_map(const BinaryGrid& blocked,
+                                                   const BinaryGrid& diagram,
+                                                   const TopologyOptions& options = {});
+
+enum class TopoPlanStatus : std::uint8_t {
+  kOk,
+  kStartBlocked,  ///< start outside the map or on an obstacle
+  kGoalBlocked,
+  kUnreachable,  ///< no chain of regions joins them
+};
+
+struct TopoPlan {
+  TopoPlanStatus status = TopoPlanStatus::kUnreachable;
+  std::vector<int> regions;        ///< region sequence from the start's to the goal's
+  std::vector<int> edges;          ///< the graph edges crossed
+  std::vector<Cell> waypoints;     ///< start, crossed critical-line midpoints, goal
+  double graph_cost_m = 0.0;       ///< sum of the crossed edge costs [m]
+  double waypoint_length_m = 0.0;  ///< length of the waypoint polyline [m]
+  std::size_t expanded = 0;        ///< A* expansions on the graph
+  [[nodiscard]] bool ok() const { return status == TopoPlanStatus::kOk; }
+};
+
+/// A* over the topological graph from the region of `start` to the region of `goal`.
+[[nodiscard]] TopoPlan plan_on_graph(const TopologicalMap& map, Cell start, Cell goal);
+
+}  // namespace voronav::topology

@@ -1,0 +1,221 @@
+#include "voronav/topology/topological_map.hpp"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <set>
+
+#include "voronav/core/error.hpp"
+#include "voronav/topology/topo_planner.hpp"
+#include "voronav/voronoi/test_maps.hpp"
+
+namespace voronav::topology {
+namespace {
+
+using voronoi::testing::fill_rect;
+using voronoi::testing::random_room;
+using voronoi::testing::two_rooms;
+
+// n rooms in a row (each room_w x h inside), one door of `door` cells between neighbours.
+BinaryGrid rooms_in_a_row(int n, int room_w = 24, int h = 20, int door = 4) {
+  const int w = n * (room_w + 1) + 1;
+  BinaryGrid g(GridGeometry{w, h + 2, 0.1, {}}, 0);
+  fill_rect(g, 0, 0, w - 1, 0);
+  fill_rect(g, 0, h + 1, w - 1, h + 1);
+  for (int k = 0; k <= n; ++k)
+    fill_rect(g, k * (room_w + 1), 0, k * (room_w + 1), h + 1);
+  const int y0 = (h + 2 - door) / 2;
+  for (int k = 1; k < n; ++k)
+    fill_rect(g, k * (room_w + 1), y0, k * (room_w + 1), y0 + door - 1, 0);
+  return g;
+}
+
+TEST(TopologicalMap, TwoRoomsOneDoorGiveTwoRegionsAndOneCriticalPoint) {
+  for (const DiagramMethod method : {DiagramMethod::kEdt, DiagramMethod::kCellularAutomaton}) {
+    const BinaryGrid g = two_rooms(30, 24, 4);  // dividing wall x = 31, door y = 11..14
+    TopologyOptions o;
+    o.method = method;
+    const TopologicalMap m = build_topological_map(g, o);
+    ASSERT_EQ(m.regions.size(), 2U) << static_cast<int>(method);
+    int separating = 0;
+    for (const auto& cp : m.critical_points) {
+      if (!cp.separates) continue;
+      ++separating;
+      EXPECT_NEAR(cp.cell.x, 31, 1) << cp.cell;
+      EXPECT_GE(cp.cell.y, 11);
+      EXPECT_LE(cp.cell.y, 14);
+      // The basis points are the two jambs of the door.
+      std::set<Cell> basis{cp.basis[0], cp.basis[1]};
+      EXPECT_EQ(cp.basis[0].x, 31);
+      EXPECT_EQ(cp.basis[1].x, 31);
+      EXPECT_TRUE(basis.count(Cell{31, 10}) && basis.count(Cell{31, 15}))
+          << cp.basis[0] << " " << cp.basis[1];
+      EXPECT_NEAR(cp.clearance_m, 0.2, 0.11);
+    }
+    EXPECT_EQ(separating, 1) << static_cast<int>(method);
+    EXPECT_EQ(m.critical_points.size(), 1U) << static_cast<int>(method);
+    ASSERT_EQ(m.edges.size(), 1U);
+    EXPECT_EQ(m.edges[0].a, 0);
+    EXPECT_EQ(m.edges[0].b, 1);
+    // Rooms are on either side of the wall.
+    EXPECT_NE(m.region_of({10, 10}), m.region_of({50, 10}));
+    EXPECT_EQ(m.region_of({31, 0}), -1);
+    // Region areas: 30 x 24 cells each plus the door cells.
+    EXPECT_NEAR(m.regions[0].area_m2 + m.regions[1].area_m2, (2 * 30 * 24 + 4) * 0.01, 1e-9);
+  }
+}
+
+TEST(TopologicalMap, RoomsInARowAndThePlanThroughTheDoors) {
+  const BinaryGrid g = rooms_in_a_row(4);
+  const TopologicalMap m = build_topological_map(g);
+  ASSERT_EQ(m.regions.size(), 4U);
+  EXPECT_EQ(m.edges.size(), 3U);
+  const TopoPlan p = plan_on_graph(m, {3, 3}, {4 * 25 - 3, 18});
+  ASSERT_TRUE(p.ok());
+  EXPECT_EQ(p.regions.size(), 4U);
+  EXPECT_EQ(p.edges.size(), 3U);
+  ASSERT_EQ(p.waypoints.size(), 5U);
+  for (int k = 1; k <= 3; ++k) {
+    EXPECT_EQ(p.waypoints[static_cast<std::size_t>(k)].x, 25 * k);  // in the door
+    EXPECT_GE(p.waypoints[static_cast<std::size_t>(k)].y, 9);
+    EXPECT_LE(p.waypoints[static_cast<std::size_t>(k)].y, 12);
+  }
+  // Same region: a direct segment.
+  const TopoPlan q = plan_on_graph(m, {3, 3}, {20, 15});
+  ASSERT_TRUE(q.ok());
+  EXPECT_EQ(q.waypoints.size(), 2U);
+  EXPECT_EQ(plan_on_graph(m, {0, 0}, {3, 3}).status, TopoPlanStatus::kStartBlocked);
+  EXPECT_EQ(plan_on_graph(m, {3, 3}, {25, 1}).status, TopoPlanStatus::kGoalBlocked);
+  EXPECT_EQ(plan_on_graph(m, {3, 3}, {-5, 3}).status, TopoPlanStatus::kGoalBlocked);
+}
+
+TEST(TopologicalMap, ClosedDoorMakesTheGoalUnreachable) {
+  BinaryGrid g = rooms_in_a_row(2);
+  fill_rect(g, 25, 0, 25, 21);  // close the door
+  const TopologicalMap m = build_topological_map(g);
+  EXPECT_EQ(m.regions.size(), 2U);
+  EXPECT_TRUE(m.edges.empty());
+  EXPECT_EQ(plan_on_graph(m, {3, 3}, {40, 10}).status, TopoPlanStatus::kUnreachable);
+}
+
+// Brute force over all simple door sequences: the graph A* must find the shortest waypoint path.
+double brute_force(const TopologicalMap& m, Cell start, Cell goal) {
+  const GridGeometry& geo = m.geometry;
+  double best = HUGE_VAL;
+  std::vector<char> used(m.edges.size(), 0);
+  std::function<void(int, Vec2, double)> dfs = [&](int region, Vec2 at, double len) {
+    if (region == m.region_of(goal))
+      best = std::min(best, len + distance(at, geo.cell_center(goal)));
+    for (std::size_t k = 0; k < m.edges.size(); ++k) {
+      const TopoEdge& e = m.edges[k];
+      if (used[k] || (e.a != region && e.b != region)) continue;
+      const Vec2 mid =
+          geo.cell_center(m.critical_points[static_cast<std::size_t>(e.critical_point)].midpoint);
+      used[k] = 1;
+      dfs(e.a == region ? e.b : e.a, mid, len + distance(at, mid));
+      used[k] = 0;
+    }
+  };
+  dfs(m.region_of(start), geo.cell_center(start), 0.0);
+  return best;
+}
+
+TEST(TopologicalMap, GraphPlanIsOptimalOverDoorSequences) {
+  // A 2 x 2 block of rooms with doors between all neighbours: two routes between opposite rooms.
+  BinaryGrid g(GridGeometry{51, 41, 0.1, {}}, 0);
+  fill_rect(g, 0, 0, 50, 0);
+  fill_rect(g, 0, 40, 50, 40);
+  fill_rect(g, 0, 0, 0, 40);
+  fill_rect(g, 50, 0, 50, 40);
+  fill_rect(g, 25, 0, 25, 40);
+  fill_rect(g, 0, 20, 50, 20);
+  fill_rect(g, 25, 5, 25, 8, 0);    // bottom rooms, door near the bottom
+  fill_rect(g, 25, 33, 25, 36, 0);  // top rooms, door near the top
+  fill_rect(g, 5, 20, 8, 20, 0);    // left rooms, door on the left
+  fill_rect(g, 42, 20, 45, 20, 0);  // right rooms, door on the right
+  const TopologicalMap m = build_topological_map(g);
+  ASSERT_EQ(m.regions.size(), 4U);
+  ASSERT_EQ(m.edges.size(), 4U);
+  int checked = 0;
+  for (const Cell s : {Cell{3, 3}, Cell{20, 17}, Cell{10, 30}})
+    for (const Cell t : {Cell{47, 37}, Cell{30, 23}, Cell{45, 10}, Cell{4, 38}}) {
+      const TopoPlan p = plan_on_graph(m, s, t);
+      ASSERT_TRUE(p.ok());
+      EXPECT_NEAR(p.waypoint_length_m, brute_force(m, s, t), 1e-9) << s << " -> " << t;
+      ++checked;
+    }
+  EXPECT_EQ(checked, 12);
+}
+
+TEST(TopologicalMap, InvariantsOnRandomRooms) {
+  for (std::uint32_t seed = 0; seed < 25; ++seed) {
+    const BinaryGrid g = random_room(seed, 60, 44, 6);
+    const TopologicalMap m = build_topological_map(g);
+    const double min_area = TopologyOptions{}.min_region_area;
+    std::vector<std::size_t> count(m.regions.size(), 0);
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      if (g[i]) {
+        EXPECT_EQ(m.region[i], -1);
+        continue;
+      }
+      ASSERT_GE(m.region[i], 0) << "seed " << seed;
+      ASSERT_LT(m.region[i], static_cast<int>(m.regions.size()));
+      count[static_cast<std::size_t>(m.region[i])]++;
+    }
+    for (std::size_t r = 0; r < m.regions.size(); ++r) {
+      EXPECT_EQ(count[r], m.regions[r].cells);
+      EXPECT_EQ(m.region_of(m.regions[r].centre), static_cast<int>(r));
+      // Small regions survive only when they touch no critical line (isolated pockets).
+      if (m.regions[r].area_m2 < min_area) {
+        for (const auto& e : m.edges)
+          EXPECT_TRUE(e.a != static_cast<int>(r) && e.b != static_cast<int>(r));
+      }
+    }
+    for (const auto& e : m.edges) {
+      EXPECT_LT(e.a, e.b);
+      EXPECT_GT(e.length_m, 0.0);
+      EXPECT_TRUE(m.critical_points[static_cast<std::size_t>(e.critical_point)].separates);
+    }
+  }
+}
+
+TEST(TopologicalPlanner, PlansThroughTheGraphOnTheGrid) {
+  const BinaryGrid g = rooms_in_a_row(3);
+  TopologicalPlanner planner;
+  const planning::PlanResult r = planner.plan(g, {3, 3}, {70, 18});
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r.path.front(), (Cell{3, 3}));
+  EXPECT_EQ(r.path.back(), (Cell{70, 18}));
+  for (std::size_t k = 1; k < r.path.size(); ++k) {
+    EXPECT_FALSE(g[r.path[k]]);
+    EXPECT_LE(std::abs(r.path[k].x - r.path[k - 1].x), 1);
+    EXPECT_LE(std::abs(r.path[k].y - r.path[k - 1].y), 1);
+  }
+  ASSERT_TRUE(planner.map().has_value());
+  EXPECT_EQ(planner.map()->regions.size(), 3U);
+  // Never shorter than the optimal grid path, and not much longer on this map.
+  planning::AStarPlanner astar;
+  const double opt = astar.plan(g, {3, 3}, {70, 18}).length_cells;
+  EXPECT_GE(r.length_cells, opt - 1e-9);
+  EXPECT_LT(r.length_cells, 1.15 * opt);
+  EXPECT_EQ(planner.plan(g, {0, 0}, {70, 18}).status, planning::PlanStatus::kStartOccupied);
+  EXPECT_EQ(planner.plan(g, {3, 3}, {25, 0}).status, planning::PlanStatus::kGoalOccupied);
+  EXPECT_EQ(planner.plan(g, {3, 3}, {500, 0}).status, planning::PlanStatus::kOutOfMap);
+}
+
+TEST(TopologicalMap, RejectsBadInput) {
+  TopologyOptions o;
+  o.min_region_area = -1.0;
+  EXPECT_THROW((void)build_topological_map(two_rooms(), o), Error);
+  o = {};
+  o.rise_ratio = std::nan("");
+  EXPECT_THROW((void)build_topological_map(two_rooms(), o), Error);
+  EXPECT_THROW((void)build_topological_map(two_rooms(), BinaryGrid(3, 3, 0)), Error);
+  const TopologicalMap empty = build_topological_map(BinaryGrid{});
+  EXPECT_TRUE(empty.regions.empty());
+  const TopologicalMap full = build_topological_map(BinaryGrid(5, 5, 1));
+  EXPECT_TRUE(full.regions.empty());
+}
+
+}  // namespace
+}  // namespace voronav::topology

@@ -1,0 +1,159 @@
+// EDT-based generalized Voronoi diagram (GVD) of a binary grid, with incremental updates.
+//
+// The diagram of seed 003 (section III) is the set of free cells equidistant to two obstacles. Here
+// it is computed from the exact Euclidean distance transform (Felzenszwalb-Huttenlocher, with
+// the nearest obstacle cell, the "site", of every cell) in three steps:
+//  1. raw diagram: a free cell p is a Voronoi cell when a 4-neighbour q has a nearest site that is
+//     "another obstacle": of a different 8-connected obstacle component, or of the same component
+//     but far from p's site (|s_p - s_q| > max(site_separation, site_separation_ratio * d_p), so
+//     that rooms bounded by one connected wall still get a diagram). Of the two cells p, q only
+//     the one farther from the obstacles is marked (ties: the lower row-major index), which makes
+//     every Voronoi cell equidistant to two different obstacles within one cell;
+//  2. thinning to a one-cell-wide 8-connected skeleton: simple cells (Yokoi 8-connectivity
+//     number 1) that are not end points are removed in order of increasing clearance, so the
+//     skeleton keeps the ridge of the distance field and its topology;
+//  3. pruning of spurs: a branch from an end point to a junction shorter than
+//     max(spur_min_length, spur_clearance_ratio * clearance at the junction) is removed.
+//
+// DynamicGvd keeps the state so that changed cells (a door closes, an obstacle moves) update the
+// distance field and the raw diagram locally (the dynamic-brushfire idea of Lau, Sprunk and
+// Burgard, IROS 2010): only the columns holding changed cells and the rows whose column distances
+// changed are recomputed, obstacle labels are repaired by flood fill of the touched components,
+// and raw Voronoi marks are recomputed only where a nearest site changed (everywhere when two
+// components merged or one split). Thinning and pruning then run over the diagram cells only.
+// The result is identical to a full rebuild.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "voronav/core/grid_map.hpp"
+#include "voronav/core/occupancy.hpp"
+
+namespace voronav::voronoi {
+
+struct GvdOptions {
+  /// Whether the outside of the grid is an obstacle (a wall around the map).
+  bool border_is_blocked = true;
+  /// Sites of the same obstacle component count as different obstacles when farther apart than
+  /// this [cells] (and than site_separation_ratio * clearance).
+  double site_separation = 2.5;
+  /// ... and farther apart than this fraction of the clearance of the cell (dimensionless).
+  /// 0 by default: any positive ratio loses the parabolic arcs between a wall and a convex
+  /// corner of the same component far from both, which can disconnect the diagram; the spurs
+  /// that a small separation lets through on rough walls are pruned instead.
+  double site_separation_ratio = 0.0;
+  /// Thin the raw diagram to one cell wide.
+  bool thin = true;
+  /// Spurs shorter than max(spur_min_length, spur_clearance_ratio * junction clearance) are
+  /// pruned; spur_min_length in [m], spur_clearance_ratio dimensionless; both 0 = no pruning.
+  double spur_min_length = 0.0;
+  double spur_clearance_ratio = 1.5;
+  /// Rounds of pruning (each round may expose new spurs) (>= 0).
+  int prune_rounds = 2;
+};
+
+/// A site position that means "no obstacle anywhere".
+inline constexpr Cell kNoSiteCell{-2147483647, -2147483647};
+
+struct GeneralizedVoronoi {
+  GridGeometry geometry;
+  /// The input, 1 = blocked.
+  BinaryGrid blocked;
+  /// Distance [cells] from each cell centre to the nearest obstacle cell centre (0 on obstacles,
+  /// +inf when there is none).
+  GridMap<float> clearance;
+  /// The nearest obstacle cell of every cell (outside the grid for the border wall, kNoSiteCell
+  /// when there is none).
+  GridMap<Cell> nearest_site;
+  /// Obstacle component id of every blocked cell (-1 on free cells). Ids are arbitrary but equal
+  /// exactly for the cells of one component.
+  GridMap<std::int32_t> obstacle_label;
+  /// Raw diagram (before thinning), 1 = Voronoi cell.
+  BinaryGrid raw;
+  /// The final diagram: thinned and pruned, 1 = Voronoi cell.
+  BinaryGrid diagram;
+
+  /// Clearance [m] of a cell.
+  [[nodiscard]] double clearance_m(Cell c) const {
+    return static_cast<double>(clearance.at(c)) * geometry.resolution;
+  }
+  /// The cells of the final diagram in row-major order.
+  [[nodiscard]] std::vector<Cell> cells() const;
+};
+
+/// A change of one cell for DynamicGvd::update.
+struct CellChange {
+  Cell cell;
+  bool blocked = true;
+};
+
+/// What an incremental update touched (for benchmarks and tests).
+struct GvdUpdateStats {
+  std::size_t changed_cells = 0;      ///< cells whose blocked state actually changed
+  std::size_t recomputed_rows = 0;    ///< rows of the second EDT pass that were recomputed
+  std::size_t changed_distances = 0;  ///< cells whose distance or nearest site changed
+  bool labels_repartitioned = false;  ///< a merge or split of obstacle components happened
+};
+
+class DynamicGvd {
+ public:
+  /// Full build. Throws voronav::Error for invalid options.
+  explicit DynamicGvd(const BinaryGrid& blocked, const GvdOptions& options = {});
+
+  /// Applies cell changes and updates the diagram locally. Throws voronav::Error for a cell
+  /// outside the grid (nothing is changed then).
+  GvdUpdateStats update(std::span<const CellChange> changes);
+
+  [[nodiscard]] const GridGeometry& geometry() const { return geometry_; }
+  [[nodiscard]] const GvdOptions& options() const { return options_; }
+  /// Squared distance [cells^2] to the nearest obstacle (checked access), -1 when none.
+  [[nodiscard]] std::int64_t squared_clearance(Cell c) const;
+  [[nodiscard]] bool is_blocked(Cell c) const;
+  [[nodiscard]] bool is_voronoi(Cell c) const;
+  /// A full copy of the current state as a GeneralizedVoronoi (O(cells)).
+  [[nodiscard]] GeneralizedVoronoi snapshot() const;
+
+ private:
+  [[nodiscard]] std::size_t pidx(int x, int y) const {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(pw_) +
+           static_cast<std::size_t>(x);
+  }
+  void column_pass(int x, std::vector<int>* changed_rows);
+  void row_pass(int y, std::vector<std::size_t>* changed);
+  // Floods the blocked component of seed with id; returns how many distinct old labels it met.
+  int relabel_from(std::size_t seed, std::int32_t id);
+  void full_labels();
+  [[nodiscard]] bool raw_mark(std::size_t i) const;
+  void thin_and_prune();
+
+  GvdOptions options_;
+  GridGeometry geometry_;
+  int pw_ = 0, ph_ = 0;  // padded size (one cell on each side)
+  // Per padded cell: 0 free, 1 blocked, 2 outside and not an obstacle (border not blocked).
+  std::vector<std::uint8_t> state_;
+  std::vector<std::int64_t> col_d_;  // squared vertical distance to the nearest site in the column
+  std::vector<std::int32_t> col_arg_;  // row of that site (-1 none)
+  std::vector<std::int64_t> d2_;       // squared distance (-1 none)
+  std::vector<std::int32_t> site_;     // padded index of the nearest site (-1 none)
+  std::vector<std::int32_t> label_;    // obstacle component id (-1 free)
+  std::int32_t next_label_ = 0;
+  std::vector<std::uint8_t> raw_;
+  std::vector<std::uint8_t> skel_;
+};
+
+/// Full build of the generalized Voronoi diagram (see the file comment).
+[[nodiscard]] GeneralizedVoronoi build_gvd(const BinaryGrid& blocked,
+                                           const GvdOptions& options = {});
+
+/// Thins a diagram in place to one cell wide, removing simple non-end cells in order of
+/// increasing `clearance` (any field of the same size; larger = kept longer). Exposed for the
+/// cellular-automaton diagram, which uses the same thinning.
+void thin_diagram(BinaryGrid& diagram, const GridMap<float>& clearance);
+
+/// Thins (as thin_diagram) and then prunes spurs of a diagram in place with the pruning options
+/// of `options` (spur_min_length, spur_clearance_ratio, prune_rounds); clearance in [cells].
+void prune_diagram(BinaryGrid& diagram, const GridMap<float>& clearance, const GvdOptions& options);
+
+}  // namespace voronav::voronoi

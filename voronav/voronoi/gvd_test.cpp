@@ -1,0 +1,352 @@
+#include "voronav/voronoi/gvd.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+
+#include "voronav/core/error.hpp"
+#include "voronav/field/distance_transform.hpp"
+#include "voronav/voronoi/test_maps.hpp"
+#include "voronav/voronoi/voronoi_graph.hpp"
+
+namespace voronav::voronoi {
+namespace {
+
+using testing::fill_rect;
+using testing::random_room;
+
+BinaryGrid random_cells(std::mt19937& rng, int w, int h, double p) {
+  BinaryGrid g(w, h, 0);
+  std::bernoulli_distribution b(p);
+  for (std::size_t i = 0; i < g.size(); ++i)
+    g[i] = b(rng) ? 1 : 0;
+  return g;
+}
+
+TEST(Gvd, DistanceEqualsBruteForceOnRandomMaps) {
+  std::mt19937 rng(3);
+  for (int seed = 0; seed < 40; ++seed) {
+    const int w = 1 + static_cast<int>(rng() % 30), h = 1 + static_cast<int>(rng() % 30);
+    const BinaryGrid g = random_cells(rng, w, h, 0.02 + 0.05 * (seed % 5));
+    for (const bool border : {false, true}) {
+      GvdOptions o;
+      o.border_is_blocked = border;
+      const GeneralizedVoronoi v = build_gvd(g, o);
+      const field::DistanceField ref = field::distance_transform(g, {.border_is_blocked = border});
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const Cell c{x, y};
+          double best = HUGE_VAL;
+          for (int yy = -1; yy <= h; ++yy)
+            for (int xx = -1; xx <= w; ++xx) {
+              const bool inside = xx >= 0 && yy >= 0 && xx < w && yy < h;
+              if (inside ? g[Cell{xx, yy}] == 0 : !border) continue;
+              best = std::min(best, double((x - xx) * (x - xx) + (y - yy) * (y - yy)));
+            }
+          if (std::isinf(best)) {
+            EXPECT_TRUE(std::isinf(v.clearance[c]));
+            EXPECT_EQ(v.nearest_site[c], kNoSiteCell);
+            continue;
+          }
+          ASSERT_FLOAT_EQ(v.clearance[c], static_cast<float>(std::sqrt(best)));
+          ASSERT_FLOAT_EQ(v.clearance[c], std::sqrt(ref.squared_distance[c]));
+          const Cell s = v.nearest_site[c];
+          EXPECT_EQ((s.x - x) * (s.x - x) + (s.y - y) * (s.y - y), static_cast<int>(best));
+        }
+    }
+  }
+}
+
+// Whether two site cells belong to different obstacles in the sense of the diagram. Sites
+// outside the grid are the border wall, which in random_room() is one component with the outer
+// walls (cell (0, 0) is a wall).
+bool different_obstacles(const GeneralizedVoronoi& v, Cell s, Cell t, double d,
+                         const GvdOptions& o) {
+  auto label = [&](Cell c) {
+    return v.geometry.contains(c) ? v.obstacle_label[c] : v.obstacle_label[(Cell{0, 0})];
+  };
+  if (label(s) != label(t)) return true;
+  const double sep = std::max(o.site_separation, o.site_separation_ratio * d);
+  const double dx = s.x - t.x, dy = s.y - t.y;
+  return dx * dx + dy * dy > sep * sep;
+}
+
+TEST(Gvd, EveryCellIsEquidistantToTwoObstaclesWithinOneCell) {
+  for (std::uint32_t seed = 0; seed < 30; ++seed) {
+    const BinaryGrid g = random_room(seed);
+    GvdOptions o;
+    const GeneralizedVoronoi v = build_gvd(g, o);
+    std::size_t checked = 0;
+    for (const Cell p : v.cells()) {
+      ASSERT_FALSE(g[p]);
+      const double dp = v.clearance[p];
+      const Cell s = v.nearest_site[p];
+      bool ok = false;
+      for (int k = 0; k < 4 && !ok; ++k) {
+        const Cell q = p + kNeighbours8[k];
+        if (!g.contains(q)) continue;
+        const Cell t = g[q] ? q : v.nearest_site[q];  // a blocked cell is its own site
+        if (t == s) continue;
+        const double dt = std::hypot(p.x - t.x, p.y - t.y);
+        ok = dt - dp <= 1.0 + 1e-9 && different_obstacles(v, s, t, dp, o);
+      }
+      EXPECT_TRUE(ok) << "seed " << seed << " cell " << p;
+      ++checked;
+    }
+    EXPECT_GT(checked, 20U) << seed;
+  }
+}
+
+// 4-connected free components; returns the component id per cell (-1 on obstacles).
+GridMap<int> free_components(const BinaryGrid& g, int* count) {
+  GridMap<int> comp(g.geometry(), -1);
+  *count = 0;
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    if (g[i] || comp[i] >= 0) continue;
+    std::vector<Cell> st{g.cell_at(i)};
+    comp[i] = *count;
+    while (!st.empty()) {
+      const Cell c = st.back();
+      st.pop_back();
+      for (int k = 0; k < 4; ++k) {
+        const Cell q = c + kNeighbours8[k];
+        if (!g.contains(q) || g[q] || comp[q] >= 0) continue;
+        comp[q] = *count;
+        st.push_back(q);
+      }
+    }
+    ++*count;
+  }
+  return comp;
+}
+
+TEST(Gvd, SkeletonIsConnectedWhereFreeSpaceIsConnected) {
+  for (std::uint32_t seed = 0; seed < 60; ++seed) {
+    const BinaryGrid g = random_room(seed, 56, 40, 4 + static_cast<int>(seed % 6));
+    const GeneralizedVoronoi v = build_gvd(g);
+    int nfree = 0;
+    const GridMap<int> fc = free_components(g, &nfree);
+    // 8-connected diagram components.
+    GridMap<int> dc(g.geometry(), -1);
+    int ndiag = 0;
+    for (const Cell c0 : v.cells()) {
+      if (dc[c0] >= 0) continue;
+      std::vector<Cell> st{c0};
+      dc[c0] = ndiag;
+      while (!st.empty()) {
+        const Cell c = st.back();
+        st.pop_back();
+        for (const Cell o : kNeighbours8) {
+          const Cell q = c + o;
+          if (!g.contains(q) || !v.diagram[q] || dc[q] >= 0) continue;
+          dc[q] = ndiag;
+          st.push_back(q);
+        }
+      }
+      ++ndiag;
+    }
+    std::vector<std::set<int>> per_free(static_cast<std::size_t>(nfree));
+    std::vector<int> area(static_cast<std::size_t>(nfree), 0);
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      if (fc[i] < 0) continue;
+      area[static_cast<std::size_t>(fc[i])]++;
+      if (dc[i] >= 0) per_free[static_cast<std::size_t>(fc[i])].insert(dc[i]);
+    }
+    for (int f = 0; f < nfree; ++f) {
+      EXPECT_LE(per_free[static_cast<std::size_t>(f)].size(), 1U)
+          << "seed " << seed << " free component " << f;
+      if (area[static_cast<std::size_t>(f)] >= 30) {
+        EXPECT_EQ(per_free[static_cast<std::size_t>(f)].size(), 1U)
+            << "seed " << seed << " free component " << f << " area "
+            << area[static_cast<std::size_t>(f)];
+      }
+    }
+  }
+}
+
+TEST(Gvd, SkeletonIsOneCellWide) {
+  for (std::uint32_t seed = 0; seed < 30; ++seed) {
+    const GeneralizedVoronoi v = build_gvd(random_room(seed));
+    for (int y = 0; y + 1 < v.geometry.height; ++y)
+      for (int x = 0; x + 1 < v.geometry.width; ++x) {
+        const int n = v.diagram[Cell{x, y}] + v.diagram[Cell{x + 1, y}] +
+                      v.diagram[Cell{x, y + 1}] + v.diagram[Cell{x + 1, y + 1}];
+        EXPECT_LT(n, 4) << "2x2 block at " << x << "," << y << " seed " << seed;
+      }
+  }
+}
+
+TEST(Gvd, CorridorCentreLines) {
+  // Odd width: walls on rows 0 and 6, the centre line is row 3.
+  BinaryGrid odd(GridGeometry{20, 7, 0.1, {}}, 0);
+  fill_rect(odd, 0, 0, 19, 0);
+  fill_rect(odd, 0, 6, 19, 6);
+  GvdOptions o;
+  o.border_is_blocked = false;
+  const GeneralizedVoronoi v = build_gvd(odd, o);
+  for (int y = 0; y < 7; ++y)
+    for (int x = 0; x < 20; ++x)
+      EXPECT_EQ(v.diagram[(Cell{x, y})], y == 3 ? 1 : 0) << x << "," << y;
+  // Even width: walls on rows 0 and 5; the bisector is between rows 2 and 3, row 2 is kept.
+  BinaryGrid even(GridGeometry{20, 6, 0.1, {}}, 0);
+  fill_rect(even, 0, 0, 19, 0);
+  fill_rect(even, 0, 5, 19, 5);
+  const GeneralizedVoronoi e = build_gvd(even, o);
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 20; ++x)
+      EXPECT_EQ(e.diagram[(Cell{x, y})], y == 2 ? 1 : 0) << x << "," << y;
+  // The graph of the odd corridor: two ends, one edge along 19 cells, clearance 3 cells.
+  const VoronoiGraph graph = build_voronoi_graph(v);
+  ASSERT_EQ(graph.nodes.size(), 2U);
+  ASSERT_EQ(graph.edges.size(), 1U);
+  EXPECT_NEAR(graph.edges[0].length_m, 1.9, 1e-9);
+  EXPECT_NEAR(graph.edges[0].min_clearance_m, 0.3, 1e-6);
+  EXPECT_EQ(graph.nodes[0].kind, VoronoiNodeKind::kEnd);
+  EXPECT_EQ(graph.nodes[0].degree, 1);
+}
+
+TEST(Gvd, PlusShapedCorridorsGiveOneJunctionAndFourEnds) {
+  BinaryGrid g(GridGeometry{41, 41, 0.05, {}}, 1);
+  fill_rect(g, 0, 17, 40, 23, 0);  // horizontal corridor, 7 wide, centre row 20
+  fill_rect(g, 17, 0, 23, 40, 0);  // vertical corridor, centre column 20
+  GvdOptions o;
+  o.border_is_blocked = false;
+  const GeneralizedVoronoi v = build_gvd(g, o);
+  const VoronoiGraph graph = build_voronoi_graph(v);
+  int ends = 0, junctions = 0;
+  for (const auto& n : graph.nodes) {
+    ends += n.kind == VoronoiNodeKind::kEnd;
+    junctions += n.kind == VoronoiNodeKind::kJunction;
+  }
+  EXPECT_EQ(junctions, 1);
+  EXPECT_EQ(ends, 4);
+  EXPECT_EQ(graph.edges.size(), 4U);
+  for (const auto& e : graph.edges) {
+    EXPECT_NEAR(e.min_clearance_m, 4 * 0.05, 1e-6);  // rows 17..23 free, walls 16 and 24
+    EXPECT_GT(e.length_m, 15 * 0.05);
+    EXPECT_LT(e.length_m, 21 * 0.05);
+  }
+  EXPECT_TRUE(v.diagram[(Cell{20, 20})] || v.diagram[(Cell{20, 21})] || v.diagram[(Cell{21, 20})]);
+}
+
+TEST(Gvd, RoomWithPillarGivesALoop) {
+  BinaryGrid g(GridGeometry{40, 30, 0.1, {}}, 0);
+  fill_rect(g, 15, 11, 24, 18);
+  const GeneralizedVoronoi v = build_gvd(g);
+  const VoronoiGraph graph = build_voronoi_graph(v);
+  // The corner branches are pruned: what is left is a cycle around the pillar.
+  int cycle_rank = static_cast<int>(graph.edges.size()) - static_cast<int>(graph.nodes.size()) + 1;
+  EXPECT_EQ(cycle_rank, 1);
+  for (const auto& n : graph.nodes)
+    EXPECT_NE(n.kind, VoronoiNodeKind::kEnd);
+}
+
+TEST(Gvd, EmptyAndDegenerateMaps) {
+  EXPECT_TRUE(build_gvd(BinaryGrid{}).cells().empty());
+  GvdOptions o;
+  o.border_is_blocked = false;
+  const GeneralizedVoronoi none = build_gvd(BinaryGrid(8, 5, 0), o);
+  EXPECT_TRUE(none.cells().empty());
+  EXPECT_TRUE(std::isinf(none.clearance[(Cell{3, 3})]));
+  EXPECT_TRUE(build_gvd(BinaryGrid(8, 5, 1)).cells().empty());
+  o.site_separation = std::nan("");
+  EXPECT_THROW((void)build_gvd(BinaryGrid(3, 3, 0), o), Error);
+  o = {};
+  o.prune_rounds = -1;
+  EXPECT_THROW((void)build_gvd(BinaryGrid(3, 3, 0), o), Error);
+  DynamicGvd d(BinaryGrid(4, 4, 0));
+  const CellChange bad{{4, 0}, true};
+  EXPECT_THROW((void)d.update(std::span<const CellChange>(&bad, 1)), Error);
+  EXPECT_THROW((void)d.is_voronoi({-1, 0}), Error);
+}
+
+// Same partition of obstacle cells into components (ids may differ).
+void expect_same_partition(const GridMap<std::int32_t>& a, const GridMap<std::int32_t>& b) {
+  std::map<std::int32_t, std::int32_t> ab, ba;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i] < 0, b[i] < 0) << i;
+    if (a[i] < 0) continue;
+    auto [it1, new1] = ab.emplace(a[i], b[i]);
+    auto [it2, new2] = ba.emplace(b[i], a[i]);
+    ASSERT_EQ(it1->second, b[i]) << i;
+    ASSERT_EQ(it2->second, a[i]) << i;
+  }
+}
+
+void expect_equal(const GeneralizedVoronoi& inc, const GeneralizedVoronoi& full,
+                  const std::string& what) {
+  ASSERT_EQ(inc.blocked, full.blocked) << what;
+  for (std::size_t i = 0; i < full.clearance.size(); ++i) {
+    ASSERT_EQ(inc.clearance[i], full.clearance[i]) << what << " cell " << i;
+    ASSERT_EQ(inc.nearest_site[i], full.nearest_site[i]) << what << " cell " << i;
+  }
+  expect_same_partition(inc.obstacle_label, full.obstacle_label);
+  ASSERT_EQ(inc.raw, full.raw) << what;
+  ASSERT_EQ(inc.diagram, full.diagram) << what;
+}
+
+TEST(DynamicGvd, IncrementalUpdateEqualsFullRebuild) {
+  int repartitions = 0;
+  for (std::uint32_t seed = 0; seed < 40; ++seed) {
+    std::mt19937 rng(1000 + seed);
+    const bool border = seed % 3 != 0;
+    GvdOptions o;
+    o.border_is_blocked = border;
+    BinaryGrid g = random_room(seed, 36, 28, 3 + static_cast<int>(seed % 4));
+    DynamicGvd dyn(g, o);
+    std::uniform_int_distribution<int> ux(0, g.width() - 1), uy(0, g.height() - 1);
+    for (int step = 0; step < 6; ++step) {
+      std::vector<CellChange> changes;
+      const int kind = static_cast<int>(rng() % 4);
+      const Cell c{ux(rng), uy(rng)};
+      if (kind == 0) {  // a 3x3 block appears or disappears
+        const bool blocked = rng() % 2 == 0;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx)
+            if (g.contains(c + Cell{dx, dy})) changes.push_back({c + Cell{dx, dy}, blocked});
+      } else if (kind == 1) {  // random single cells
+        for (int k = 0; k < 5; ++k)
+          changes.push_back({{ux(rng), uy(rng)}, rng() % 2 == 0});
+      } else if (kind == 2) {  // an obstacle moves by one cell
+        for (int dy = 0; dy < 2; ++dy)
+          for (int dx = 0; dx < 2; ++dx)
+            if (g.contains(c + Cell{dx, dy})) changes.push_back({c + Cell{dx, dy}, false});
+        for (int dy = 0; dy < 2; ++dy)
+          for (int dx = 1; dx < 3; ++dx)
+            if (g.contains(c + Cell{dx, dy})) changes.push_back({c + Cell{dx, dy}, true});
+      } else {  // flip a wall cell (opens or closes a gap)
+        changes.push_back({{ux(rng), 0}, rng() % 2 == 0});
+        changes.push_back({{0, uy(rng)}, rng() % 2 == 0});
+      }
+      const GvdUpdateStats st = dyn.update(changes);
+      repartitions += st.labels_repartitioned;
+      for (const CellChange& ch : changes)
+        g[ch.cell] = ch.blocked ? 1 : 0;
+      expect_equal(dyn.snapshot(), build_gvd(g, o),
+                   "seed " + std::to_string(seed) + " step " + std::to_string(step));
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+  }
+  EXPECT_GT(repartitions, 0);  // the test exercised merges/splits too
+}
+
+TEST(DynamicGvd, SmallChangeRecomputesFewRows) {
+  BinaryGrid g = random_room(5, 200, 150, 10);
+  DynamicGvd dyn(g);
+  std::vector<CellChange> changes;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx)
+      changes.push_back({{100 + dx, 75 + dy}, true});
+  const GvdUpdateStats st = dyn.update(changes);
+  EXPECT_EQ(st.changed_cells, 9U);
+  EXPECT_LT(st.recomputed_rows, 150U);
+  EXPECT_TRUE(dyn.is_blocked({100, 75}));
+  EXPECT_EQ(dyn.squared_clearance({100, 75}), 0);
+  EXPECT_EQ(dyn.update(changes).changed_cells, 0U);  // no-op
+}
+
+}  // namespace
+}  // namespace voronav::voronoi
