@@ -1,0 +1,176 @@
+// voronav explore: swarm exploration of an unknown world (seed 004: reactive 4-sector search,
+// feature points, Voronoi tree dispatch) or a frontier baseline (nearest frontier / Burgard
+// coordinated). Thin over voronav::exploration::run_exploration; JSON out, optional pictures
+// and the recording in --out DIR.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "command.hpp"
+#include "voronav/core/error.hpp"
+#include "voronav/exploration/explorer.hpp"
+#include "voronav/render/figure.hpp"
+
+namespace voronav::cli {
+namespace {
+
+struct ExploreArgs {
+  std::string world;
+  int robots = 4;
+  std::string method = "tree";
+  double time = 600.0;
+  double tree_start = 400.0;
+  std::uint64_t seed = 1;
+  std::string start;
+  std::filesystem::path out;
+  double stop_at = 1.01;
+  int picture_px = 900;
+  bool json = false;
+};
+
+render::Color robot_color(std::size_t i) {
+  const render::Color c[] = {render::colors::kRed,    render::colors::kBlue,
+                             render::colors::kGreen,  render::colors::kOrange,
+                             render::colors::kPurple, render::colors::kCyan};
+  return c[i % 6];
+}
+
+void draw_trajectories(render::Figure& fig, const exploration::ExplorationResult& r) {
+  const auto& frames = r.recording.frames;
+  if (frames.empty()) return;
+  for (std::size_t i = 0; i < frames.front().poses.size(); ++i) {
+    std::vector<Vec2> pts;
+    for (const auto& f : frames)
+      pts.push_back(f.poses[i].position);
+    fig.polyline(pts, robot_color(i).with_alpha(0.7), 1.2);
+    fig.circle(r.recording.starts[i], 0.12, robot_color(i));
+    fig.point(pts.back(), robot_color(i), 4.0);
+  }
+}
+
+// `world`: the resampled ground truth (same geometry as the recording).
+void save_pictures(const OccupancyGrid& world, const exploration::ExplorationResult& r,
+                   const std::filesystem::path& dir, int side_px) {
+  {
+    render::Figure fig(world.geometry(), {.auto_side_px = side_px,
+                                          .title = "explore: team map and trajectories (" +
+                                                   std::string(to_string(r.method)) + ")"});
+    fig.occupancy(r.recording.team_map);
+    draw_trajectories(fig, r);
+    fig.save(dir / "explore.png");
+  }
+  if (r.method != exploration::ExplorationMethod::kTree) return;
+  render::Figure fig(world.geometry(),
+                     {.auto_side_px = side_px, .title = "feature points, Voronoi tree and routes"});
+  fig.occupancy(world);
+  for (const auto& p : r.recording.feature_points)
+    fig.point(p.position, render::colors::kRed, 2.5);
+  const auto& tree = r.recording.tree;
+  for (const auto& n : tree.nodes)
+    if (n.parent >= 0) fig.polyline(n.path, render::colors::kGrey, 1.5);
+  for (std::size_t i = 0; i < r.recording.routes.size(); ++i)
+    fig.polyline(r.recording.routes[i], robot_color(i).with_alpha(0.6), 2.5);
+  for (const auto& n : tree.nodes)
+    fig.point(n.position, render::colors::kBlack, 2.0);
+  for (int leaf : tree.leaves_by_distance())
+    fig.circle(tree.nodes[static_cast<std::size_t>(leaf)].position, 0.25,
+               render::colors::kTransparent, render::colors::kCyan, 2.0);
+  if (!tree.empty())
+    fig.circle(tree.nodes[static_cast<std::size_t>(tree.root)].position, 0.3,
+               render::colors::kTransparent, render::colors::kRed, 2.5);
+  fig.legend({{"feature point", render::colors::kRed},
+              {"tree edge", render::colors::kGrey},
+              {"root", render::colors::kRed},
+              {"leaf (goal)", render::colors::kCyan}});
+  fig.save(dir / "tree.png");
+}
+
+void run(const ExploreArgs& a) {
+  OccupancyGrid world;
+  if (a.world == "paper") {
+    world = exploration::paper_world(0.05);
+  } else {
+    world = load_map_context(a.world, false).map.grid;
+  }
+  exploration::ExplorationOptions o;
+  o.method = exploration::parse_exploration_method(a.method);
+  o.robots = a.robots;
+  o.time_limit = a.time;
+  o.tree_start_time = a.tree_start;
+  o.seed = a.seed;
+  o.stop_at_coverage = a.stop_at;
+  if (!a.start.empty())
+    o.start = parse_point(a.start, "--start");
+  else if (a.world == "paper")
+    o.start = exploration::kPaperWorldStart;
+  const exploration::ExplorationResult r = exploration::run_exploration(world, o);
+
+  if (!a.out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(a.out, ec);
+    if (ec) throw Error(a.out.string(), 0, "cannot create the output folder: " + ec.message());
+    std::ofstream f(a.out / "exploration.json");
+    if (!f) throw Error((a.out / "exploration.json").string(), 0, "cannot write");
+    f << exploration::to_json(r, true) << "\n";
+    save_pictures(exploration::resample_world(world, o.min_cell_size), r, a.out, a.picture_px);
+  }
+  if (a.json) {
+    print_json(nlohmann::json::parse(exploration::to_json(r, false)));
+  } else {
+    const auto opt = [](const std::optional<double>& v) {
+      return v ? std::to_string(*v) + " s" : std::string("not reached");
+    };
+    std::cout << "method:         " << to_string(r.method) << " (" << r.robots << " robots)\n"
+              << "coverage:       " << r.coverage * 100.0 << " %\n"
+              << "t90:            " << opt(r.t90_s) << "\n"
+              << "t99:            " << opt(r.t99_s) << "\n"
+              << "distance:       " << r.distance_m << " m\n"
+              << "collisions:     " << r.collisions << "\n"
+              << "overlap:        " << r.overlap << "\n"
+              << "feature points: " << r.feature_points << "\n"
+              << "leaves:         " << r.leaves << "\n";
+  }
+}
+
+void setup(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "explore",
+      "Explore an unknown world with a robot team (seed 004 tree or frontier baselines)");
+  auto args = std::make_shared<ExploreArgs>();
+  cmd->add_option("--world", args->world,
+                  "Ground-truth world: ROS map .yaml, Moving AI .map, floor plan .png/.pgm, or "
+                  "'paper' (the seed 004 20x20 m world)")
+      ->required();
+  cmd->add_option("--robots", args->robots, "Number of robots (1..64)")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  cmd->add_option("--method", args->method, "tree | frontier | coordinated")->capture_default_str();
+  cmd->add_option("--time", args->time, "Simulated time limit [s]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--tree-start", args->tree_start,
+                  "tree: seconds of reactive search before the first Voronoi tree")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Random seed (start spot, random driving)")
+      ->capture_default_str();
+  cmd->add_option("--start", args->start,
+                  "Team start X,Y in world metres (default: a seeded free spot; (2,2) for paper)");
+  cmd->add_option("--stop-at", args->stop_at,
+                  "Stop when the coverage reaches this fraction (default: run the full time)");
+  cmd->add_option("--out", args->out,
+                  "Folder for exploration.json (with the recording), explore.png and tree.png");
+  cmd->add_option("--picture-px", args->picture_px, "Larger side of the pictures [px]")
+      ->check(CLI::Range(100, 4000))
+      ->capture_default_str();
+  cmd->add_flag("--json", args->json,
+                "JSON output: coverage, t90_s, t99_s (null if not reached), distance_m, "
+                "collisions, overlap, feature_points, leaves, ...");
+  cmd->callback([args] { run(*args); });
+}
+
+const Command reg{{"explore", setup, 40}};
+
+}  // namespace
+}  // namespace voronav::cli

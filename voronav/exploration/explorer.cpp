@@ -1,0 +1,642 @@
+#include "voronav/exploration/explorer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <limits>
+#include <memory>
+#include <random>
+#include <sstream>
+
+#include "voronav/core/error.hpp"
+#include "voronav/field/distance_transform.hpp"
+#include "voronav/mapping/occupancy_map.hpp"
+#include "voronav/planning/bfs.hpp"
+#include "voronav/planning/grid_planner.hpp"
+
+namespace voronav::exploration {
+namespace {
+
+enum class AgentMode { kReactive, kFollow };
+
+struct Agent {
+  Agent(const ExplorationOptions& o, Pose2 start, std::uint64_t seed, const GridGeometry& g)
+      : body(o.drive, start, seed),
+        controller([&] {
+          robot::ReactiveControllerOptions c = o.controller;
+          c.seed = seed;
+          return c;
+        }()),
+        map(g) {}
+  robot::DiffDriveRobot body;
+  robot::ReactiveController controller;
+  mapping::OccupancyMap map;
+  AgentMode mode = AgentMode::kReactive;
+  std::vector<Vec2> route;
+  std::size_t next = 0;
+  double blocked_time = 0.0;
+  double since_progress = 0.0;
+  double reactive_until = 0.0;  // [s] a deadlocked robot searches reactively until then
+  std::optional<Vec2> goal;     // frontier goal
+  std::vector<Vec2> blacklist;  // unreachable frontier goals
+};
+
+OccupancyGrid team_grid(const mapping::OccupancyMap& m) {
+  OccupancyGrid out(m.geometry(), kUnknown);
+  const auto l = m.log_odds().data();
+  auto o = out.data();
+  for (std::size_t i = 0; i < l.size(); ++i)
+    o[i] = l[i] > 0.0F ? kOccupied : (l[i] < 0.0F ? kFree : kUnknown);
+  return out;
+}
+
+// Known free cells, inflated by the body radius + clearance: 0 = a robot centre may go there.
+BinaryGrid traversable_of(const OccupancyGrid& map, double radius) {
+  return planning::make_planning_grid(binarize(map, {50, true}), radius);
+}
+
+std::optional<Cell> nearest_free(const BinaryGrid& g, Vec2 p, int search = 8) {
+  const auto c = g.geometry().world_to_cell(p);
+  if (!c) return std::nullopt;
+  std::optional<Cell> best;
+  double bd = std::numeric_limits<double>::infinity();
+  for (int dy = -search; dy <= search; ++dy)
+    for (int dx = -search; dx <= search; ++dx) {
+      const Cell n{c->x + dx, c->y + dy};
+      if (!g.contains(n) || g[n] != 0) continue;
+      const double d = dx * dx + dy * dy;
+      if (d < bd) {
+        bd = d;
+        best = n;
+      }
+    }
+  return best;
+}
+
+// Line-of-sight simplification of a cell path on `g`.
+std::vector<Vec2> simplify(const BinaryGrid& g, const std::vector<Vec2>& pts) {
+  if (pts.size() <= 2) return pts;
+  std::vector<Vec2> out{pts.front()};
+  std::size_t i = 0;
+  while (i + 1 < pts.size()) {
+    std::size_t j = i + 1;
+    for (std::size_t k = std::min(pts.size() - 1, i + 40); k > i + 1; --k)
+      if (segment_free(g, pts[i], pts[k])) {
+        j = k;
+        break;
+      }
+    out.push_back(pts[j]);
+    i = j;
+  }
+  return out;
+}
+
+// Path from the flood's start to `goal` by descending the BFS step counts (8-neighbours).
+std::vector<Vec2> descend(const BinaryGrid& g, const planning::BfsFlood& flood, Cell goal) {
+  std::vector<Vec2> rev;
+  std::int32_t s = flood.steps(g, goal);
+  if (s < 0) return {};
+  Cell c = goal;
+  rev.push_back(g.geometry().cell_center(c));
+  while (s > 0) {
+    bool moved = false;
+    for (const Cell d : kNeighbours8) {
+      const Cell n = c + d;
+      if (g.contains(n) && flood.steps(g, n) == s - 1) {
+        c = n;
+        --s;
+        moved = true;
+        break;
+      }
+    }
+    if (!moved) return {};
+    rev.push_back(g.geometry().cell_center(c));
+  }
+  return {rev.rbegin(), rev.rend()};
+}
+
+std::string num(double v) {
+  if (!std::isfinite(v)) return "null";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+}  // namespace
+
+std::string_view to_string(ExplorationMethod m) {
+  switch (m) {
+    case ExplorationMethod::kTree:
+      return "tree";
+    case ExplorationMethod::kFrontier:
+      return "frontier";
+    case ExplorationMethod::kCoordinated:
+      return "coordinated";
+  }
+  return "?";
+}
+
+ExplorationMethod parse_exploration_method(std::string_view name) {
+  if (name == "tree") return ExplorationMethod::kTree;
+  if (name == "frontier") return ExplorationMethod::kFrontier;
+  if (name == "coordinated") return ExplorationMethod::kCoordinated;
+  throw Error("--method", 0,
+              "expected one of tree, frontier, coordinated; got '" + std::string(name) + "'");
+}
+
+void ExplorationOptions::validate() const {
+  const auto positive = [](double v, const char* name) {
+    if (!(v > 0.0) || !std::isfinite(v))
+      throw Error(std::string("ExplorationOptions.") + name, 0,
+                  "expected a positive finite number, got " + std::to_string(v));
+  };
+  if (robots < 1 || robots > 64)
+    throw Error("ExplorationOptions.robots", 0, "expected 1..64, got " + std::to_string(robots));
+  positive(time_limit, "time_limit");
+  positive(dt, "dt");
+  positive(start_spacing, "start_spacing");
+  positive(map_period, "map_period");
+  positive(record_period, "record_period");
+  positive(replan_period, "replan_period");
+  positive(goal_tolerance, "goal_tolerance");
+  positive(min_cell_size, "min_cell_size");
+  if (!(tree_start_time >= 0.0) || !std::isfinite(tree_start_time))
+    throw Error("ExplorationOptions.tree_start_time", 0, "expected a finite number >= 0");
+  if (!(clearance >= 0.0)) throw Error("ExplorationOptions.clearance", 0, "expected >= 0");
+  if (map_beam_stride < 1) throw Error("ExplorationOptions.map_beam_stride", 0, "expected >= 1");
+  if (start && !start->is_finite()) throw Error("--start", 0, "start must be finite");
+  if (std::isnan(stop_at_coverage)) throw Error("ExplorationOptions.stop_at_coverage", 0, "NaN");
+  drive.validate();
+  laser.validate();
+  controller.validate();
+  features.validate();
+  tree.validate();
+  frontier.validate();
+}
+
+// Coarser cells: a coarse cell is occupied if any of its cells is, else unknown if any is.
+OccupancyGrid resample_world(const OccupancyGrid& in, double min_cell) {
+  if (!(min_cell > 0.0) || !std::isfinite(min_cell))
+    throw Error("resample_world", 0, "min_cell must be a positive finite size [m]");
+  const double res = in.resolution();
+  const int k = static_cast<int>(std::floor(min_cell / res + 1e-9));
+  if (k < 2) return in;
+  GridGeometry g = in.geometry();
+  g.width = (g.width + k - 1) / k;
+  g.height = (g.height + k - 1) / k;
+  g.resolution = res * k;
+  OccupancyGrid out(g, kFree);
+  for (int y = 0; y < in.height(); ++y)
+    for (int x = 0; x < in.width(); ++x) {
+      const std::int8_t v = in[Cell{x, y}];
+      std::int8_t& o = out[Cell{x / k, y / k}];
+      if (v >= 50)
+        o = kOccupied;
+      else if (v < 0 && o != kOccupied)
+        o = kUnknown;
+    }
+  return out;
+}
+
+ExplorationResult run_exploration(const OccupancyGrid& world_in, const ExplorationOptions& o) {
+  o.validate();
+  if (world_in.empty()) throw Error("run_exploration", 0, "the world map is empty");
+  const OccupancyGrid world = resample_world(world_in, o.min_cell_size);
+  const GridGeometry& g = world.geometry();
+  const BinaryGrid blocked = binarize(world, {50, true});
+  const double body = o.drive.body_radius;
+
+  // --- start positions ---
+  std::mt19937_64 rng(o.seed);
+  const auto place_team = [&](Vec2 centre) {
+    std::vector<Vec2> starts;
+    // Candidates on a square spiral of spacing start_spacing around the centre.
+    for (int ring = 0; ring < 12 && static_cast<int>(starts.size()) < o.robots; ++ring) {
+      for (int dy = -ring; dy <= ring && static_cast<int>(starts.size()) < o.robots; ++dy)
+        for (int dx = -ring; dx <= ring && static_cast<int>(starts.size()) < o.robots; ++dx) {
+          if (std::max(std::abs(dx), std::abs(dy)) != ring) continue;
+          const Vec2 p = centre + Vec2{dx * o.start_spacing, dy * o.start_spacing};
+          if (robot::disc_collides(blocked, p, body + 0.05)) continue;
+          if (!segment_free(blocked, centre, p)) continue;
+          starts.push_back(p);
+        }
+    }
+    return starts;
+  };
+  std::vector<Vec2> starts;
+  if (o.start) {
+    if (robot::disc_collides(blocked, *o.start, body + 0.05))
+      throw Error("--start", 0, "the start is not free for a robot of radius " + num(body) + " m");
+    starts = place_team(*o.start);
+  } else {
+    const field::DistanceField df = field::distance_transform(blocked);
+    // Spots with at least 0.8 m clearance (less in cramped worlds: 70 % of the largest).
+    double most = 0.0;
+    for (std::size_t i = 0; i < blocked.size(); ++i)
+      if (blocked[i] == 0) most = std::max(most, df.distance_m(blocked.cell_at(i)));
+    const double need = std::min(0.8, 0.7 * most);
+    std::vector<Cell> roomy;
+    for (std::size_t i = 0; i < blocked.size(); ++i) {
+      const Cell c = blocked.cell_at(i);
+      if (blocked[i] == 0 && df.distance_m(c) >= need && need > body) roomy.push_back(c);
+    }
+    if (roomy.empty()) throw Error("run_exploration", 0, "no free spot for a robot in the world");
+    std::uniform_int_distribution<std::size_t> pick(0, roomy.size() - 1);
+    for (int tries = 0; tries < 50; ++tries) {
+      starts = place_team(g.cell_center(roomy[pick(rng)]));
+      if (static_cast<int>(starts.size()) == o.robots) break;
+    }
+  }
+  if (static_cast<int>(starts.size()) < o.robots)
+    throw Error("run_exploration", 0,
+                "no room for " + std::to_string(o.robots) + " robots around the start");
+  Vec2 centre;
+  for (const Vec2& s : starts)
+    centre += s;
+  centre = centre / static_cast<double>(starts.size());
+
+  // --- reachable free cells (ground truth), the denominator of coverage ---
+  std::vector<char> reachable(blocked.size(), 0);
+  std::size_t reachable_count = 0;
+  {
+    const auto sc = g.world_to_cell(starts.front());
+    std::vector<Cell> stack{*sc};
+    reachable[blocked.index(*sc)] = 1;
+    while (!stack.empty()) {
+      const Cell c = stack.back();
+      stack.pop_back();
+      ++reachable_count;
+      for (int k = 0; k < 4; ++k) {
+        const Cell n = c + kNeighbours8[k];
+        if (!blocked.contains(n) || blocked[n] != 0 || reachable[blocked.index(n)]) continue;
+        reachable[blocked.index(n)] = 1;
+        stack.push_back(n);
+      }
+    }
+  }
+
+  // --- team ---
+  std::vector<std::unique_ptr<Agent>> agents;
+  for (int i = 0; i < o.robots; ++i) {
+    const double yaw = std::uniform_real_distribution<double>(-3.14159, 3.14159)(rng);
+    agents.push_back(std::make_unique<Agent>(o, Pose2{starts[static_cast<std::size_t>(i)], yaw},
+                                             o.seed * 1000003ULL + static_cast<std::uint64_t>(i),
+                                             g));
+  }
+  mapping::OccupancyMap team(g);
+  mapping::LaserModelOptions beam_model;
+  beam_model.max_range = o.laser.range_max;
+  robot::LaserOptions map_laser = o.laser;
+  map_laser.beams = std::max(1, o.laser.beams / o.map_beam_stride);
+  FeatureMap features(o.features);
+  robot::LaserOptions guard_laser = o.laser;  // front check while following a path
+  guard_laser.beams = 13;
+  guard_laser.field_of_view = 1.4;
+  guard_laser.range_max = std::min(o.laser.range_max, 1.0);
+  guard_laser.noise_stddev = 0.0;
+
+  ExplorationResult result;
+  result.method = o.method;
+  result.robots = o.robots;
+  result.reachable_free_cells = reachable_count;
+  result.recording.geometry = g;
+  result.recording.starts = starts;
+
+  const double plan_radius = body + o.clearance;
+  BinaryGrid trav;
+  planning::BfsFlood flood;
+  bool tree_phase = false;
+  double next_tree_time = o.tree_start_time;
+  double next_replan = 0.0;
+  const auto steps_per = [&](double period) {
+    return std::max<long>(1, std::lround(period / o.dt));
+  };
+  const long map_every = steps_per(o.map_period), record_every = steps_per(o.record_period);
+  const long total_steps = std::lround(o.time_limit / o.dt);
+
+  const auto coverage_now = [&] {
+    const auto l = team.log_odds().data();
+    std::size_t known = 0;
+    for (std::size_t i = 0; i < l.size(); ++i)
+      if (reachable[i] && l[i] != 0.0F) ++known;
+    return reachable_count ? static_cast<double>(known) / static_cast<double>(reachable_count)
+                           : 0.0;
+  };
+
+  // Route for agent a from its position to `goal_cell` on trav (BFS descent), simplified.
+  const auto route_to = [&](Agent& a, Cell goal_cell) -> std::vector<Vec2> {
+    const auto from = nearest_free(trav, a.body.true_pose().position);
+    if (!from || flood.flood(trav, *from, planning::Connectivity::k8) == 0) return {};
+    std::vector<Vec2> path = descend(trav, flood, goal_cell);
+    if (path.empty()) return {};
+    path.insert(path.begin(), a.body.true_pose().position);
+    return simplify(trav, path);
+  };
+  const auto start_follow = [&](Agent& a, std::vector<Vec2> route) {
+    a.route = std::move(route);
+    a.next = 0;
+    a.mode = a.route.empty() ? AgentMode::kReactive : AgentMode::kFollow;
+    a.blocked_time = 0.0;
+    a.since_progress = 0.0;
+  };
+
+  const auto build_tree = [&](double t) {
+    const OccupancyGrid tg = team_grid(team);
+    trav = traversable_of(tg, plan_radius);
+    const std::vector<Vec2> pts = features.positions();
+    const PointVoronoi vor = voronoi_of_points(pts);
+    VoronoiTree tree = build_voronoi_tree(vor, trav, centre, o.tree);
+    const std::vector<int> leaves = tree.leaves_by_distance();
+    ++result.trees;
+    if (tree.empty() || leaves.empty()) return false;
+    const auto dispatch = dispatch_leaves(tree, o.robots);
+    const Vec2 root = tree.nodes[static_cast<std::size_t>(tree.root)].position;
+    const auto root_cell = g.world_to_cell(root);
+    std::vector<std::vector<Vec2>> routes;
+    for (std::size_t i = 0; i < agents.size(); ++i) {
+      Agent& a = *agents[i];
+      // To the root (the common trunk starts there), then leaf after leaf along the tree.
+      std::vector<Vec2> route = route_to(a, *root_cell);
+      if (route.empty()) route = {a.body.true_pose().position, root};
+      int at = tree.root;
+      for (int leaf : dispatch[i]) {
+        const std::vector<Vec2> w = tree.waypoints(at, leaf);
+        route.insert(route.end(), w.begin() + 1, w.end());
+        at = leaf;
+      }
+      routes.push_back(route);
+      start_follow(a, std::move(route));
+      a.reactive_until = 0.0;
+    }
+    if (result.trees == 1 || result.recording.tree.empty()) {
+      result.leaves = static_cast<int>(leaves.size());
+      result.recording.tree = std::move(tree);
+      result.recording.dispatch = dispatch;
+      result.recording.routes = std::move(routes);
+    }
+    (void)t;
+    return true;
+  };
+
+  const auto replan_frontiers = [&] {
+    const OccupancyGrid tg = team_grid(team);
+    trav = traversable_of(tg, plan_radius);
+    const std::vector<Frontier> fr = find_frontiers(tg, trav, o.frontier);
+    std::vector<std::vector<double>> costs(agents.size(), std::vector<double>(fr.size(), -1.0));
+    std::vector<std::vector<std::vector<Vec2>>> paths(agents.size());
+    for (std::size_t i = 0; i < agents.size(); ++i) {
+      Agent& a = *agents[i];
+      const auto from = nearest_free(trav, a.body.true_pose().position);
+      if (!from || flood.flood(trav, *from, planning::Connectivity::k8) == 0) continue;
+      for (std::size_t f = 0; f < fr.size(); ++f) {
+        const Vec2 tp = g.cell_center(fr[f].target);
+        bool banned = false;
+        for (const Vec2& b : a.blacklist)
+          banned = banned || distance(b, tp) < 0.5;
+        const std::int32_t s = flood.steps(trav, fr[f].target);
+        if (!banned && s >= 0) costs[i][f] = s * g.resolution;
+      }
+      // Paths only for the frontiers this robot might take are made below (same flood reused).
+      paths[i].resize(fr.size());
+      const std::vector<int> mine = o.method == ExplorationMethod::kFrontier
+                                        ? assign_nearest(fr, {costs[i]}, o.frontier)
+                                        : std::vector<int>{};
+      if (!mine.empty() && mine[0] >= 0) {
+        const auto k = static_cast<std::size_t>(mine[0]);
+        paths[i][k] = descend(trav, flood, fr[k].target);
+      }
+    }
+    std::vector<int> choice = o.method == ExplorationMethod::kFrontier
+                                  ? assign_nearest(fr, costs, o.frontier)
+                                  : assign_coordinated(fr, costs, o.frontier);
+    for (std::size_t i = 0; i < agents.size(); ++i) {
+      Agent& a = *agents[i];
+      if (choice[i] < 0) {
+        a.goal.reset();
+        if (a.mode == AgentMode::kFollow && a.route.empty()) a.mode = AgentMode::kReactive;
+        continue;
+      }
+      const auto k = static_cast<std::size_t>(choice[i]);
+      const Vec2 tp = g.cell_center(fr[k].target);
+      if (a.goal && distance(*a.goal, tp) < 0.5 && a.mode == AgentMode::kFollow) continue;
+      std::vector<Vec2> path = paths[i][k];
+      if (path.empty()) {
+        const auto from = nearest_free(trav, a.body.true_pose().position);
+        if (from && flood.flood(trav, *from, planning::Connectivity::k8) > 0)
+          path = descend(trav, flood, fr[k].target);
+      }
+      if (path.empty()) continue;
+      path.insert(path.begin(), a.body.true_pose().position);
+      a.goal = tp;
+      start_follow(a, simplify(trav, path));
+    }
+  };
+
+  // --- the loop ---
+  std::vector<robot::Disc> others;
+  double t = 0.0;
+  for (long step = 0; step < total_steps; ++step) {
+    t = static_cast<double>(step) * o.dt;
+    // Sense and map.
+    if (step % map_every == 0) {
+      for (auto& ap : agents) {
+        Agent& a = *ap;
+        const robot::LaserScan scan =
+            robot::cast_scan(blocked, a.body.true_pose(), map_laser, {}, nullptr);
+        mapping::RangeScan rs;
+        rs.pose = scan.pose;
+        rs.bearings.resize(scan.ranges.size());
+        rs.ranges.resize(scan.ranges.size());
+        for (std::size_t k = 0; k < scan.ranges.size(); ++k) {
+          rs.bearings[k] = scan.angle(k);
+          rs.ranges[k] = scan.ranges[k];
+        }
+        a.map.insert_scan(rs, beam_model);
+        team.insert_scan(rs, beam_model);
+        if (o.method == ExplorationMethod::kTree)
+          features.add(extract_feature_points(scan, o.features));
+      }
+    }
+    // Decide.
+    if (o.method == ExplorationMethod::kTree) {
+      bool all_reactive = true;
+      for (auto& ap : agents)
+        all_reactive = all_reactive && ap->mode == AgentMode::kReactive;
+      if (t >= next_tree_time && (!tree_phase || all_reactive)) {
+        tree_phase = true;
+        // A new tree when the previous dispatch is finished (at most every 30 s).
+        if (!build_tree(t))
+          next_tree_time = t + 30.0;
+        else
+          next_tree_time = t + 30.0;
+      }
+    } else if (t >= next_replan) {
+      replan_frontiers();
+      next_replan = t + o.replan_period;
+    }
+    // Act.
+    for (std::size_t i = 0; i < agents.size(); ++i) {
+      Agent& a = *agents[i];
+      others.clear();
+      for (std::size_t j = 0; j < agents.size(); ++j)
+        if (j != i) others.push_back({agents[j]->body.true_pose().position, body});
+      const Pose2 pose = a.body.true_pose();
+      robot::BodyVelocity cmd;
+      if (a.mode == AgentMode::kFollow && t < a.reactive_until) {
+        cmd = a.controller.update(robot::cast_scan(blocked, pose, o.laser, others, &rng), o.dt);
+      } else if (a.mode == AgentMode::kFollow) {
+        // Waypoint following: advance past reached waypoints, steer to the farthest visible one.
+        while (a.next < a.route.size() &&
+               distance(pose.position, a.route[a.next]) < o.goal_tolerance) {
+          ++a.next;
+          a.since_progress = 0.0;
+        }
+        if (a.next >= a.route.size()) {
+          a.mode = AgentMode::kReactive;
+          a.goal.reset();
+          cmd = {};
+        } else {
+          const Vec2 target = a.route[a.next];
+          const double e = wrap_angle(
+              std::atan2(target.y - pose.position.y, target.x - pose.position.x) - pose.yaw);
+          cmd.omega = std::clamp(1.5 * e, -o.drive.max_angular_speed, o.drive.max_angular_speed);
+          cmd.v = std::abs(e) > 0.6 ? 0.0 : o.controller.drive_velocity * std::cos(e);
+          // Guard: something (a wall corner, another robot) right in front -> stop.
+          const robot::LaserScan guard = robot::cast_scan(blocked, pose, guard_laser, others);
+          double front = guard.range_max;
+          for (float r : guard.ranges)
+            front = std::min(front, static_cast<double>(r));
+          if (front < body + 0.12 && cmd.v > 0.0) {
+            cmd.v = 0.0;
+            a.blocked_time += o.dt;
+          } else {
+            a.blocked_time = 0.0;
+          }
+          a.since_progress += o.dt;
+          if (a.blocked_time > 3.0 || a.since_progress > 30.0) {
+            // Deadlock or no progress: search reactively for a while, then drop the goal.
+            a.reactive_until = t + 5.0;
+            a.blocked_time = 0.0;
+            a.since_progress = 0.0;
+            if (o.method != ExplorationMethod::kTree) {
+              if (a.goal) a.blacklist.push_back(*a.goal);
+              a.goal.reset();
+              a.route.clear();
+              a.mode = AgentMode::kReactive;
+            } else {
+              ++a.next;  // skip the waypoint that cannot be reached
+            }
+          }
+        }
+      } else {
+        cmd = a.controller.update(robot::cast_scan(blocked, pose, o.laser, others, &rng), o.dt);
+      }
+      a.body.command(cmd);
+      // Footprint safety (as a check of the scan points around the footprint would do): a
+      // command that would touch an obstacle within the next few steps becomes a turn on the spot.
+      if (cmd.v != 0.0) {
+        const double ahead = std::copysign(std::min(0.1, std::abs(cmd.v) * 3.0 * o.dt), cmd.v);
+        const Vec2 next = pose.position + Vec2{std::cos(pose.yaw), std::sin(pose.yaw)} * ahead;
+        if (robot::disc_collides(blocked, next, body + 0.01, others)) {
+          cmd.v = 0.0;
+          if (cmd.omega == 0.0) cmd.omega = o.controller.obs_avoid;
+          a.blocked_time += o.dt;
+        }
+      }
+      a.body.command(cmd);
+      a.body.step(o.dt, blocked, others);
+    }
+    // Record.
+    if ((step + 1) % record_every == 0 || step + 1 == total_steps) {
+      ExplorationFrame f;
+      f.t = t + o.dt;
+      for (auto& ap : agents)
+        f.poses.push_back(ap->body.true_pose());
+      f.coverage = coverage_now();
+      if (!result.t90_s && f.coverage >= 0.90) result.t90_s = f.t;
+      if (!result.t99_s && f.coverage >= 0.99) result.t99_s = f.t;
+      const bool stop = f.coverage >= o.stop_at_coverage;
+      result.recording.frames.push_back(std::move(f));
+      if (stop) break;
+    }
+  }
+
+  // --- results ---
+  result.sim_time_s = result.recording.frames.empty() ? 0.0 : result.recording.frames.back().t;
+  result.coverage = coverage_now();
+  std::size_t team_known = 0, sum_known = 0;
+  for (const float l : team.log_odds().data())
+    team_known += l != 0.0F ? 1 : 0;
+  for (auto& ap : agents) {
+    result.distance_m += ap->body.distance_travelled();
+    result.collisions += ap->body.collisions();
+    for (const float l : ap->map.log_odds().data())
+      sum_known += l != 0.0F ? 1 : 0;
+  }
+  result.overlap =
+      team_known ? static_cast<double>(sum_known) / static_cast<double>(team_known) - 1.0 : 0.0;
+  result.feature_points = static_cast<int>(features.size());
+  result.recording.feature_points = features.points();
+  result.recording.team_map = team_grid(team);
+  return result;
+}
+
+std::string to_json(const ExplorationResult& r, bool include_recording) {
+  std::ostringstream os;
+  const auto opt = [](const std::optional<double>& v) { return v ? num(*v) : std::string("null"); };
+  os << "{\"method\":\"" << to_string(r.method) << "\",\"robots\":" << r.robots
+     << ",\"coverage\":" << num(r.coverage) << ",\"t90_s\":" << opt(r.t90_s)
+     << ",\"t99_s\":" << opt(r.t99_s) << ",\"sim_time_s\":" << num(r.sim_time_s)
+     << ",\"distance_m\":" << num(r.distance_m) << ",\"collisions\":" << r.collisions
+     << ",\"overlap\":" << num(r.overlap) << ",\"feature_points\":" << r.feature_points
+     << ",\"leaves\":" << r.leaves << ",\"trees\":" << r.trees
+     << ",\"reachable_free_cells\":" << r.reachable_free_cells;
+  if (include_recording) {
+    const ExplorationRecording& rec = r.recording;
+    const auto pt = [](Vec2 p) {
+      std::string s = "[";
+      s += num(p.x);
+      s += ',';
+      s += num(p.y);
+      s += ']';
+      return s;
+    };
+    os << ",\"recording\":{\"resolution\":" << num(rec.geometry.resolution)
+       << ",\"width\":" << rec.geometry.width << ",\"height\":" << rec.geometry.height
+       << ",\"origin\":" << pt(rec.geometry.origin.position) << ",\"frames\":[";
+    for (std::size_t i = 0; i < rec.frames.size(); ++i) {
+      const ExplorationFrame& f = rec.frames[i];
+      os << (i ? "," : "") << "{\"t\":" << num(f.t) << ",\"coverage\":" << num(f.coverage)
+         << ",\"poses\":[";
+      for (std::size_t k = 0; k < f.poses.size(); ++k)
+        os << (k ? "," : "") << "[" << num(f.poses[k].position.x) << ","
+           << num(f.poses[k].position.y) << "," << num(f.poses[k].yaw) << "]";
+      os << "]}";
+    }
+    os << "],\"feature_points\":[";
+    for (std::size_t i = 0; i < rec.feature_points.size(); ++i)
+      os << (i ? "," : "") << "{\"position\":" << pt(rec.feature_points[i].position)
+         << ",\"kind\":\"" << to_string(rec.feature_points[i].kind)
+         << "\",\"observations\":" << rec.feature_points[i].observations << "}";
+    os << "],\"tree\":{\"root\":" << rec.tree.root << ",\"nodes\":[";
+    for (std::size_t i = 0; i < rec.tree.nodes.size(); ++i) {
+      const TreeNode& n = rec.tree.nodes[i];
+      os << (i ? "," : "") << "{\"position\":" << pt(n.position) << ",\"parent\":" << n.parent
+         << ",\"left\":" << n.left << ",\"right\":" << n.right << ",\"weight\":" << num(n.weight)
+         << "}";
+    }
+    os << "]},\"routes\":[";
+    for (std::size_t i = 0; i < rec.routes.size(); ++i) {
+      os << (i ? "," : "") << "[";
+      for (std::size_t k = 0; k < rec.routes[i].size(); ++k)
+        os << (k ? "," : "") << pt(rec.routes[i][k]);
+      os << "]";
+    }
+    os << "]}";
+  }
+  os << "}";
+  return os.str();
+}
+
+}  // namespace voronav::exploration

@@ -1,0 +1,123 @@
+// The exploration runner: a deterministic stepping loop over a ground-truth world with a team of
+// simulated differential-drive robots (robot module), each mapping with its laser (mapping
+// module), exploring with one of three methods:
+//  * kTree (seed 004): reactive 4-sector search with wall following until tree_start_time
+//    (400 s in the paper), collecting feature points; then the Voronoi tree of the feature points
+//    is built on the team map and the robots travel the common trunk and split to its leaves
+//    (figure 9); robots that finished their leaves search reactively again, and when all have,
+//    a new tree is built from the features found so far;
+//  * kFrontier: nearest frontier per robot (Yamauchi; ROS explore_lite);
+//  * kCoordinated: Burgard et al. 2005 utility - cost assignment.
+// Everything is seeded: the same options give the same result. The recording (poses per frame,
+// feature points, tree, routes) is a plain struct written as JSON for replay viewers.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "voronav/core/occupancy.hpp"
+#include "voronav/core/pose2.hpp"
+#include "voronav/exploration/feature_points.hpp"
+#include "voronav/exploration/frontier.hpp"
+#include "voronav/exploration/voronoi_tree.hpp"
+#include "voronav/robot/diff_drive.hpp"
+#include "voronav/robot/laser.hpp"
+#include "voronav/robot/reactive_controller.hpp"
+
+namespace voronav::exploration {
+
+enum class ExplorationMethod { kTree, kFrontier, kCoordinated };
+[[nodiscard]] std::string_view to_string(ExplorationMethod m);
+/// "tree" / "frontier" / "coordinated"; throws voronav::Error naming the accepted values.
+[[nodiscard]] ExplorationMethod parse_exploration_method(std::string_view name);
+
+struct ExplorationOptions {
+  ExplorationMethod method = ExplorationMethod::kTree;
+  int robots = 4;                  ///< team size (1..64)
+  double time_limit = 600.0;       ///< simulated time [s]
+  double dt = 0.1;                 ///< control / integration step [s]
+  std::uint64_t seed = 1;          ///< start spot (when no start is given), random driving, noise
+  std::optional<Vec2> start;       ///< team start [m]; else a seeded free spot
+  double start_spacing = 0.45;     ///< [m] robots start on a small grid around the start
+  double stop_at_coverage = 1.01;  ///< stop early when coverage reaches this (> 1: never)
+  double map_period = 0.5;         ///< scans are inserted into the maps this often [s]
+  int map_beam_stride = 2;         ///< every k-th beam is used for mapping
+  double record_period = 1.0;      ///< a frame is recorded this often [s]
+  double tree_start_time = 400.0;  ///< [s] reactive search before the first tree (seed 004)
+  double replan_period = 2.0;      ///< [s] frontier targets are re-assigned this often
+  double goal_tolerance = 0.3;     ///< [m] a waypoint or goal counts as reached
+  double clearance = 0.1;          ///< [m] added to the body radius when planning paths
+  /// [m] worlds with finer cells are resampled to cells of about this size (a coarse cell is
+  /// occupied when any of its cells is); keeps 16-robot runs on 50 m maps fast.
+  double min_cell_size = 0.1;
+  robot::DiffDriveOptions drive;
+  robot::LaserOptions laser;
+  robot::ReactiveControllerOptions controller;
+  FeaturePointOptions features;
+  VoronoiTreeOptions tree;
+  FrontierOptions frontier;
+
+  void validate() const;
+};
+
+struct ExplorationFrame {
+  double t = 0.0;            ///< [s]
+  std::vector<Pose2> poses;  ///< ground truth, one per robot
+  double coverage = 0.0;     ///< 0..1
+};
+
+struct ExplorationRecording {
+  GridGeometry geometry;
+  std::vector<Vec2> starts;
+  std::vector<ExplorationFrame> frames;
+  std::vector<FeaturePoint> feature_points;
+  VoronoiTree tree;                        ///< the first tree (kTree only)
+  std::vector<std::vector<int>> dispatch;  ///< leaves per robot of the first tree
+  std::vector<std::vector<Vec2>> routes;   ///< waypoints per robot of the first tree
+  OccupancyGrid team_map;                  ///< final merged map (ROS values)
+};
+
+struct ExplorationResult {
+  ExplorationMethod method = ExplorationMethod::kTree;
+  int robots = 0;
+  double coverage = 0.0;        ///< final fraction of reachable free cells known (0..1)
+  std::optional<double> t90_s;  ///< first time coverage >= 0.90 [s]
+  std::optional<double> t99_s;  ///< first time coverage >= 0.99 [s]
+  double sim_time_s = 0.0;      ///< simulated time [s]
+  double distance_m = 0.0;      ///< total distance driven by the team [m]
+  int collisions = 0;           ///< refused steps (body would overlap a wall or a robot)
+  double overlap = 0.0;         ///< sum of per-robot known cells / team known cells - 1
+  int feature_points = 0;
+  int leaves = 0;  ///< leaves of the first tree (kTree)
+  int trees = 0;   ///< trees built (kTree)
+  std::size_t reachable_free_cells = 0;
+  ExplorationRecording recording;
+};
+
+/// Runs one exploration. `world`: ground truth (>= 50 occupied; unknown counts as occupied),
+/// resampled to options.min_cell_size (the recording has the resampled geometry).
+/// resampled to options.min_cell_size; the recording's geometry is the resampled one.
+/// Throws voronav::Error for invalid options, an empty world, or a start that is not free.
+[[nodiscard]] ExplorationResult run_exploration(const OccupancyGrid& world,
+                                                const ExplorationOptions& options = {});
+
+/// The world as the runner sees it: cells finer than min_cell_size [m] are merged k x k
+/// (k = floor(min_cell_size / resolution)); a coarse cell is occupied when any of its cells is,
+/// else unknown when any is. Returns the input when k < 2.
+[[nodiscard]] OccupancyGrid resample_world(const OccupancyGrid& world, double min_cell_size);
+
+/// JSON of the result: coverage, t90_s, t99_s (null if not reached), distance_m, collisions,
+/// feature_points, leaves, ... With `include_recording`, the recording too (frames, features,
+/// tree nodes, routes; not the maps).
+[[nodiscard]] std::string to_json(const ExplorationResult& result, bool include_recording = false);
+
+/// The paper's 20 x 20 m world (seed 004, figure 7), reconstructed: outer walls, rectangular
+/// blocks, round obstacles and partial walls (the figure has no coordinates; see
+/// docs/reproductions/exploration.md). resolution [m/cell]. Robots start near (2, 2).
+[[nodiscard]] OccupancyGrid paper_world(double resolution = 0.05);
+inline constexpr Vec2 kPaperWorldStart{2.0, 2.0};
+
+}  // namespace voronav::exploration
