@@ -1,8 +1,10 @@
 // voronav demo: the README's first command. On a bundled real floor plan, in one run: build an
 // occupancy map from a simulated laser sweep (seed 003), its Voronoi diagram and topological map,
 // plan with A*, Dijkstra and the topological planner, coordinate a team with collision maps
-// (seed 002), and check the grid planners on a Moving AI benchmark. Writes pictures of each
-// stage, summary.json and a replay page (index.html) into an output folder and prints its path.
+// (seed 002), find a route with networked robots through an obstacle change (seed 000), explore
+// an unknown copy of the map with a swarm (seed 004), and check the grid planners on a Moving AI
+// benchmark. Writes pictures of each stage, summary.json and a replay page (index.html) into an
+// output folder and prints its path.
 #include <unistd.h>
 
 #include <chrono>
@@ -21,6 +23,7 @@
 #include "topo_pictures.hpp"
 #include "voronav/coordination/coordinator.hpp"
 #include "voronav/coordination/scenario.hpp"
+#include "voronav/exploration/explorer.hpp"
 #include "voronav/field/distance_transform.hpp"
 #include "voronav/io/floorplan.hpp"
 #include "voronav/io/movingai.hpp"
@@ -30,6 +33,8 @@
 #include "voronav/planning/planner_factory.hpp"
 #include "voronav/render/figure.hpp"
 #include "voronav/report/replay_html.hpp"
+#include "voronav/sim/netsim.hpp"
+#include "voronav/sim/world.hpp"
 #include "voronav/topology/topo_planner.hpp"
 
 namespace voronav::cli {
@@ -122,7 +127,8 @@ struct Demo {
     built_map = sweep.map.threshold();
     built_blocked = binarize(built_map);
     render::Figure fig(truth_map.geometry(), {.title = "1. occupancy grid from a laser sweep (" +
-                                                       std::to_string(o.poses) + " poses)"});
+                                                       std::to_string(o.poses) + " poses)",
+                                              .crop = render::known_bounds(built_map)});
     fig.occupancy(sweep.map.to_occupancy_grid());
     for (const Pose2& p : sweep.poses)
       fig.point(p.position, render::colors::kOrange, 2.0);
@@ -237,7 +243,8 @@ struct Demo {
                         {"delay_s", r.delays[i]},
                         {"arrival_s", r.arrivals.empty() ? 0.0 : r.arrivals[i]}});
     render::Figure fig(built_map.geometry(),
-                       {.title = "4. coordinated team: paths and start delays"});
+                       {.title = "4. coordinated team: paths and start delays",
+                        .crop = render::known_bounds(built_map)});
     fig.occupancy(built_map);
     for (std::size_t i = 0; i < planned.agents.size(); ++i) {
       const auto& ag = planned.agents[i];
@@ -273,6 +280,86 @@ struct Demo {
       page.paths.push_back({planned.agents.front().id, 0.0, "A* (demo query)", astar_path});
   }
 
+  void netsim_stage() {
+    const BinaryGrid truth = binarize(truth_map);
+    const BinaryGrid grid = planning::make_planning_grid(truth, 0.3);
+    const auto [source, destination] = far_apart_cells(grid);
+    planning::BfsFlood bfs;
+    bfs.flood(grid, source, planning::Connectivity::k8);
+    // Half the robots on the Voronoi diagram of the map, half at random (seed 000, section 5).
+    std::vector<Cell> on_voronoi, reachable;
+    for (Cell c : sim::voronoi_cells(truth, 0.5))
+      if (bfs.steps(grid, c) >= 0) on_voronoi.push_back(c);
+    for (std::size_t i = 0; i < grid.size(); ++i)
+      if (bfs.steps(grid, grid.cell_at(i)) >= 0) reachable.push_back(grid.cell_at(i));
+    std::mt19937_64 rng(args.seed + 7);
+    sim::NetSimScenario sc;
+    sc.world = truth_map;
+    sc.robots.push_back(truth_map.geometry().cell_center(source));
+    sc.destination = truth_map.geometry().cell_center(destination);
+    const int team = 10;
+    for (int i = 1; i < team; ++i) {
+      const auto& pool = (i % 2 == 1 && !on_voronoi.empty()) ? on_voronoi : reachable;
+      std::uniform_int_distribution<std::size_t> pick(0, pool.size() - 1);
+      sc.robots.push_back(truth_map.geometry().cell_center(pool[pick(rng)]));
+    }
+    // The obstacle change: 10 s after the source has its route, a 1.5 m block appears on the
+    // shortest path halfway to the destination.
+    planning::AStarPlanner astar;
+    const auto shortest = astar.plan(grid, source, destination);
+    if (shortest.ok()) {
+      const Cell mid = shortest.path[shortest.path.size() / 2];
+      const int half = static_cast<int>(std::lround(0.75 / truth_map.resolution()));
+      sim::ObstacleChange change;
+      change.after_route_s = 10.0;
+      for (int dy = -half; dy <= half; ++dy)
+        for (int dx = -half; dx <= half; ++dx) {
+          const Cell c{mid.x + dx, mid.y + dy};
+          if (truth_map.contains(c) && truth_map[c] == kFree) change.cells.push_back(c);
+        }
+      sc.changes.push_back(std::move(change));
+    }
+    sim::NetSimOptions o;
+    o.method = sim::Method::kDecentralized;
+    o.seed = args.seed;
+    o.record = true;
+    const auto res = sim::run_netsim(sc, o);
+    const auto& m = res.metrics;
+    report::write_replay_html(netsim_recording(sc, res, o.radio.range_m),
+                              (args.out / "netsim.html").string());
+    summary["networked"] = {{"robots", team},
+                            {"method", "decentralized"},
+                            {"success", m.success},
+                            {"route_time_s", m.route_time_s},
+                            {"arrival_time_s", m.arrival_time_s},
+                            {"route_length_m", m.route_length_m},
+                            {"traffic_bytes", m.traffic_bytes},
+                            {"messages", m.messages},
+                            {"repairs", m.repairs},
+                            {"travel_m", m.travel_m},
+                            {"page", "netsim.html"}};
+  }
+
+  void exploration_stage() {
+    exploration::ExplorationOptions o;
+    o.method = exploration::ExplorationMethod::kTree;
+    o.robots = 4;
+    o.time_limit = 600.0;
+    o.seed = args.seed;
+    const auto r = exploration::run_exploration(truth_map, o);
+    report::write_replay_html(exploration_recording(r), (args.out / "explore.html").string());
+    summary["exploration"] = {
+        {"method", "tree"},
+        {"robots", o.robots},
+        {"coverage_pct", 100.0 * r.coverage},
+        {"t90_s", r.t90_s ? nlohmann::json(*r.t90_s) : nlohmann::json(nullptr)},
+        {"distance_m", r.distance_m},
+        {"collisions", r.collisions},
+        {"feature_points", r.feature_points},
+        {"leaves", r.leaves},
+        {"page", "explore.html"}};
+  }
+
   void benchmark_stage() {
     const fs::path map_path = data / "movingai" / "arena.map";
     const OccupancyGrid map = io::load_movingai_map(map_path);
@@ -306,7 +393,7 @@ void run(const DemoArgs& a) {
   if (a.robots < 1 || a.robots > 20) throw Error("--robots", 0, "expected 1..20 robots");
   fs::create_directories(a.out);
   const auto t0 = Clock::now();
-  Progress progress(5, !a.json);
+  Progress progress(7, !a.json);
   progress.begin("occupancy map from a simulated laser sweep");
   d.mapping_stage();
   progress.end();
@@ -318,6 +405,12 @@ void run(const DemoArgs& a) {
   progress.end();
   progress.begin("coordinating a team with collision maps");
   d.coordination_stage();
+  progress.end();
+  progress.begin("networked robots: decentralized route with an obstacle change");
+  d.netsim_stage();
+  progress.end();
+  progress.begin("swarm exploration of an unknown copy of the map");
+  d.exploration_stage();
   progress.end();
   progress.begin("Moving AI benchmark check");
   d.benchmark_stage();
@@ -352,6 +445,13 @@ void run(const DemoArgs& a) {
             << "  coordination: " << s["coordination"]["robots"] << " robots, makespan "
             << num(s["coordination"]["makespan_s"]) << " s, valid "
             << (s["coordination"]["valid"].get<bool>() ? "yes" : "no") << "\n"
+            << "  networked:    decentralized route "
+            << (s["networked"]["success"].get<bool>() ? "found" : "NOT found") << " after "
+            << num(s["networked"]["route_time_s"]) << " s, " << s["networked"]["messages"]
+            << " messages, " << s["networked"]["traffic_bytes"] << " bytes (netsim.html)\n"
+            << "  exploration:  4 robots, tree method, coverage "
+            << num(s["exploration"]["coverage_pct"]) << " % in 600 s, "
+            << s["exploration"]["collisions"] << " collisions (explore.html)\n"
             << "  Moving AI:    " << s["movingai"]["queries"] << " queries on arena, "
             << s["movingai"]["mismatches"] << " mismatches, " << s["movingai"]["unsolved"]
             << " unsolved\n"

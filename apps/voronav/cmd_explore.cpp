@@ -8,9 +8,11 @@
 
 #include "cli_common.hpp"
 #include "command.hpp"
+#include "recordings.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/exploration/explorer.hpp"
 #include "voronav/render/figure.hpp"
+#include "voronav/report/replay_html.hpp"
 
 namespace voronav::cli {
 namespace {
@@ -114,6 +116,7 @@ void run(const ExploreArgs& a) {
     if (!f) throw Error((a.out / "exploration.json").string(), 0, "cannot write");
     f << exploration::to_json(r, true) << "\n";
     save_pictures(exploration::resample_world(world, o.min_cell_size), r, a.out, a.picture_px);
+    report::write_replay_html(exploration_recording(r), (a.out / "index.html").string());
   }
   if (a.json) {
     print_json(nlohmann::json::parse(exploration::to_json(r, false)));

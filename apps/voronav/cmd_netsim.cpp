@@ -9,8 +9,10 @@
 #include <string>
 
 #include "command.hpp"
+#include "recordings.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/render/plot.hpp"
+#include "voronav/report/replay_html.hpp"
 #include "voronav/sim/scenarios.hpp"
 
 namespace voronav::cli {
@@ -139,6 +141,16 @@ void run(const NetsimArgs& a) {
     std::ofstream f(std::filesystem::path(a.out) / ("netsim_scenario" + a.scenario + ".json"));
     if (!f) throw Error(a.out, 0, "cannot write the results");
     f << nlohmann::json{{"summary", out}, {"runs", per_run}}.dump(2) << "\n";
+    // The replay page: run 2 (the first with an obstacle change, Table 7) of the last method,
+    // run again with recording on.
+    const auto sc = sim::make_paper_run(id, std::min(a.runs, 2), a.seed);
+    sim::NetSimOptions o;
+    o.method = methods.back();
+    o.seed = a.seed;
+    o.radio.loss = a.loss;
+    o.record = true;
+    report::write_replay_html(netsim_recording(sc, sim::run_netsim(sc, o), o.radio.range_m),
+                              (std::filesystem::path(a.out) / "index.html").string());
   }
   if (!a.plots.empty()) save_plots(a.plots, a.scenario, by_method);
   if (a.json) {

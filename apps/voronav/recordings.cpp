@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace voronav::cli {
@@ -77,6 +78,129 @@ report::Recording coordination_recording(const OccupancyGrid& map,
   }
   delays.series = {d, arr};
   rec.plots.push_back(std::move(delays));
+  return rec;
+}
+
+report::Recording netsim_recording(const sim::NetSimScenario& sc, const sim::NetSimResult& result,
+                                   double radio_range_m) {
+  const sim::Recording& in = result.recording;
+  const sim::NetSimMetrics& m = result.metrics;
+  report::Recording rec;
+  rec.title = "Networked robots (seed 000): route search by Voronoi points";
+  rec.description = std::to_string(sc.robots.size()) + " robots with 3 m sensing and a " +
+                    std::to_string(static_cast<int>(radio_range_m)) + " m radio; robot " +
+                    std::to_string(sc.source) +
+                    " (the source) needs a route to the destination. Lines between robots are "
+                    "messages; the obstacle change happens while the route is in use.";
+  rec.map = sc.world;
+  rec.message_display_s = 0.6;
+  for (std::size_t r = 0; r < sc.robots.size(); ++r) {
+    report::RobotTrack t;
+    t.id = static_cast<int>(r);
+    t.name = r == sc.source ? "source" : "robot " + std::to_string(r);
+    t.radius = 0.25;
+    double yaw = 0.0;
+    for (std::size_t k = 0; k < in.steps.size(); ++k) {
+      const Vec2 p = in.steps[k].positions[r];
+      if (k > 0) {
+        const Vec2 d = p - in.steps[k - 1].positions[r];
+        if (d.norm() > 1e-9) yaw = std::atan2(d.y, d.x);
+      }
+      if (k + 1 < in.steps.size() && k > 0 && in.steps[k + 1].positions[r] == p &&
+          in.steps[k - 1].positions[r] == p)
+        continue;  // standing still: the interpolation needs only the ends of the pause
+      t.poses.push_back({in.steps[k].t_s, {p, yaw}});
+    }
+    if (t.poses.empty()) t.poses.push_back({0.0, {sc.robots[r], 0.0}});
+    rec.robots.push_back(std::move(t));
+  }
+  auto position = [&](std::size_t robot, double t) {
+    return report::pose_at(rec.robots[robot], t).position;
+  };
+  for (const auto& msg : in.messages) {
+    const std::string type(network::to_string(msg.type));
+    if (msg.type == network::MessageType::kLinkAck) continue;  // transport chatter
+    if (msg.to != network::kBroadcast.value) {
+      if (msg.to < sc.robots.size())
+        rec.messages.push_back({msg.t_s, static_cast<int>(msg.from), static_cast<int>(msg.to), type,
+                                static_cast<std::int64_t>(msg.bytes)});
+      continue;
+    }
+    for (std::size_t r = 0; r < sc.robots.size(); ++r)
+      if (r != msg.from &&
+          distance(position(msg.from, msg.t_s), position(r, msg.t_s)) <= radio_range_m)
+        rec.messages.push_back({msg.t_s, static_cast<int>(msg.from), static_cast<int>(r), type,
+                                static_cast<std::int64_t>(msg.bytes)});
+  }
+  if (!in.route.empty())
+    rec.paths.push_back(
+        {static_cast<int>(sc.source), std::max(0.0, m.route_time_s), "route", in.route});
+  for (const auto& c : sc.changes)
+    if (m.route_time_s >= 0)
+      rec.obstacle_changes.push_back({m.route_time_s + c.after_route_s, c.cells, c.value});
+  report::Plot traffic{
+      "Radio traffic by message type", "", "bytes", report::PlotKind::kBar, false, {}, {}};
+  report::Series bytes{"bytes on the air", "#1f77b4", {}, {}};
+  for (const auto& [name, counter] : m.by_type) {
+    traffic.categories.push_back(name);
+    bytes.y.push_back(static_cast<double>(counter.bytes));
+  }
+  traffic.series.push_back(bytes);
+  if (!traffic.categories.empty()) rec.plots.push_back(std::move(traffic));
+  return rec;
+}
+
+report::Recording exploration_recording(const exploration::ExplorationResult& result) {
+  const exploration::ExplorationRecording& in = result.recording;
+  report::Recording rec;
+  rec.title = "Swarm exploration (seed 004): " + std::string(exploration::to_string(result.method));
+  char summary[200];
+  std::snprintf(summary, sizeof summary,
+                "%d robots explore an unknown world; final coverage %.1f %% after %.0f s, %.0f m "
+                "driven, %d collisions. The map is the team's merged map at the end.",
+                result.robots, 100.0 * result.coverage, result.sim_time_s, result.distance_m,
+                result.collisions);
+  rec.description = summary;
+  rec.map = in.team_map;
+  const std::size_t n = in.frames.empty() ? 0 : in.frames.front().poses.size();
+  for (std::size_t r = 0; r < n; ++r) {
+    report::RobotTrack t;
+    t.id = static_cast<int>(r);
+    t.radius = 0.12;
+    for (const auto& f : in.frames)
+      if (r < f.poses.size()) t.poses.push_back({f.t, f.poses[r]});
+    rec.robots.push_back(std::move(t));
+  }
+  if (!in.tree.empty()) {
+    report::GraphLayer tree{"Voronoi tree", "#9467bd", true, {}, {}};
+    for (std::size_t i = 0; i < in.tree.nodes.size(); ++i) {
+      const auto& node = in.tree.nodes[i];
+      tree.nodes.push_back({static_cast<int>(i), node.position,
+                            static_cast<int>(i) == in.tree.root ? "root"
+                            : node.is_leaf()                    ? "leaf"
+                                                                : ""});
+      if (node.parent >= 0) tree.edges.push_back({node.parent, static_cast<int>(i)});
+    }
+    rec.graphs.push_back(std::move(tree));
+  }
+  if (!in.feature_points.empty()) {
+    report::GraphLayer fp{"Feature points", "#ff7f0e", true, {}, {}};
+    for (std::size_t i = 0; i < in.feature_points.size(); ++i)
+      fp.nodes.push_back({static_cast<int>(i), in.feature_points[i].position, ""});
+    rec.graphs.push_back(std::move(fp));
+  }
+  const double tree_time = in.frames.empty() ? 0.0 : in.frames.front().t;
+  for (std::size_t r = 0; r < in.routes.size() && r < n; ++r)
+    if (in.routes[r].size() >= 2)
+      rec.paths.push_back({static_cast<int>(r), tree_time, "tree route", in.routes[r]});
+  report::Plot cov{"Coverage", "time [s]", "coverage [%]", report::PlotKind::kLine, true, {}, {}};
+  report::Series s{"team", "#2ca02c", {}, {}};
+  for (const auto& f : in.frames) {
+    s.x.push_back(f.t);
+    s.y.push_back(100.0 * f.coverage);
+  }
+  cov.series.push_back(std::move(s));
+  rec.plots.push_back(std::move(cov));
   return rec;
 }
 

@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "voronav/coordination/coordinator.hpp"
+#include "voronav/exploration/explorer.hpp"
 #include "voronav/report/recording.hpp"
+#include "voronav/sim/netsim.hpp"
 #include "voronav/topology/topological_map.hpp"
 
 namespace voronav::cli {
@@ -24,5 +26,17 @@ void add_schedule_tracks(report::Recording& rec, const std::vector<coordination:
 [[nodiscard]] report::Recording coordination_recording(
     const OccupancyGrid& map, const std::vector<coordination::Agent>& agents,
     const coordination::CoordinationResult& result);
+
+/// A recording of one networked-robots run (needs NetSimOptions::record): robot tracks, unicast
+/// messages as lines between robots (broadcasts to every robot in `radio_range_m`), the source's
+/// route and the obstacle changes at the time they happened.
+[[nodiscard]] report::Recording netsim_recording(const sim::NetSimScenario& scenario,
+                                                 const sim::NetSimResult& result,
+                                                 double radio_range_m);
+
+/// A recording of a swarm exploration run: the team's final map, robot tracks (ground truth),
+/// the Voronoi tree and its feature points as layers, each robot's tree route, and coverage
+/// over time.
+[[nodiscard]] report::Recording exploration_recording(const exploration::ExplorationResult& result);
 
 }  // namespace voronav::cli
