@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   auto& reg = command_registry();
   std::stable_sort(reg.begin(), reg.end(),
                    [](const CommandSpec& a, const CommandSpec& b) { return a.order < b.order; });
-  for (const auto& spec : reg) spec.setup(app);
+  for (const auto& spec : reg)
+    spec.setup(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

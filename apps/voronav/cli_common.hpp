@@ -1,0 +1,41 @@
+// Helpers shared by the CLI subcommands: parsing "X,Y" points, loading a map and converting
+// between the user's coordinates (Moving AI file cells for .map, metres for ROS/image maps) and
+// grid cells, and writing JSON.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "voronav/core/vec2.hpp"
+#include "voronav/io/map_loader.hpp"
+
+namespace voronav::cli {
+
+/// Parses "X,Y" (finite numbers); throws voronav::Error naming `option` otherwise.
+[[nodiscard]] Vec2 parse_point(const std::string& text, const std::string& option);
+
+/// A loaded map plus the coordinate convention its users speak.
+struct MapContext {
+  io::LoadedMap map;
+  /// true: points are cells ((x, y) as in Moving AI files, y down, for .map; grid cells with row 0
+  /// at the bottom otherwise); false: world metres.
+  bool cell_coordinates = false;
+
+  [[nodiscard]] Cell to_cell(Vec2 p, const std::string& option) const;
+  /// The user-facing cell coordinates of a grid cell (flipped back for .map files).
+  [[nodiscard]] nlohmann::json cell_json(Cell c) const;
+  [[nodiscard]] std::string frame_name() const;
+};
+
+/// Loads any supported map; `force_cells` makes ROS/image maps take cell coordinates too.
+[[nodiscard]] MapContext load_map_context(const std::filesystem::path& path, bool force_cells);
+
+/// Prints JSON (pretty, 2 spaces) to stdout.
+void print_json(const nlohmann::json& j);
+
+/// The folder of bundled data (data/ in the source tree), or empty when not found.
+[[nodiscard]] std::filesystem::path bundled_data_dir();
+
+}  // namespace voronav::cli

@@ -1,0 +1,165 @@
+#!/usr/bin/env python3
+"""End-to-end checks of the voronav CLI. Usage: cli_check.py VORONAV_BINARY REPO_ROOT CASE.
+
+Each case runs the real binary on the bundled data and asserts outcomes (exit codes, JSON values,
+files written, error messages that name what was wrong)."""
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+BIN, ROOT, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
+DATA = os.path.join(ROOT, "data")
+ARENA = os.path.join(DATA, "movingai", "arena.map")
+TB3 = os.path.join(DATA, "ros_maps", "turtlebot3_world", "map.yaml")
+
+
+def run(*args, expect=0):
+    p = subprocess.run([BIN, *args], capture_output=True, text=True, timeout=240)
+    if p.returncode != expect:
+        sys.exit(f"FAIL: voronav {' '.join(args)} exited {p.returncode}, expected {expect}\n"
+                 f"stdout:\n{p.stdout}\nstderr:\n{p.stderr}")
+    return p
+
+
+def check(cond, msg):
+    if not cond:
+        sys.exit("FAIL: " + msg)
+
+
+def scen_rows(path):
+    rows = []
+    with open(path) as f:
+        next(f)
+        for line in f:
+            c = line.split()
+            if len(c) >= 9:
+                rows.append((int(c[4]), int(c[5]), int(c[6]), int(c[7]), float(c[8])))
+    return rows
+
+
+def case_scen_arena():
+    out = json.loads(run("scen", "--map", ARENA, "--scen", ARENA + ".scen", "--json").stdout)
+    check(out["queries"] == len(scen_rows(ARENA + ".scen")) and out["queries"] > 0, str(out))
+    check(out["mismatches"] == 0 and out["unsolved"] == 0, str(out))
+    out = json.loads(run("scen", "--map", ARENA, "--scen", ARENA + ".scen", "--planner",
+                         "dijkstra", "--json").stdout)
+    check(out["mismatches"] == 0 and out["unsolved"] == 0, "dijkstra: " + str(out))
+
+
+def case_scen_mapf_map():
+    m = os.path.join(DATA, "mapf", "random-32-32-20.map")
+    s = os.path.join(DATA, "mapf", "random-32-32-20-random-1.scen")
+    out = json.loads(run("scen", "--map", m, "--scen", s, "--json").stdout)
+    check(out["queries"] > 0 and out["mismatches"] == 0 and out["unsolved"] == 0, str(out))
+
+
+def case_plan_movingai_matches_scen():
+    rows = scen_rows(ARENA + ".scen")
+    for sx, sy, gx, gy, opt in [rows[0], rows[len(rows) // 2], rows[-1]]:
+        out = json.loads(run("plan", "--map", ARENA, "--start", f"{sx},{sy}", "--goal",
+                             f"{gx},{gy}", "--json").stdout)
+        check(out["status"] == "ok", str(out))
+        check(abs(out["cells"] - opt) < 1e-4, f"length {out['cells']} != optimal {opt}")
+        check(out["path"][0] == [sx, sy] and out["path"][-1] == [gx, gy],
+              "path endpoints must be in the .scen frame")
+        # consecutive cells are neighbours and the octile sum equals the reported length
+        total = 0.0
+        for (x0, y0), (x1, y1) in zip(out["path"], out["path"][1:]):
+            check(max(abs(x1 - x0), abs(y1 - y0)) == 1, "path steps must be neighbours")
+            total += math.sqrt(2) if x0 != x1 and y0 != y1 else 1.0
+        check(abs(total - out["cells"]) < 1e-6, "octile sum of path differs from length")
+
+
+def case_plan_ros_world_frame():
+    out = json.loads(run("plan", "--map", TB3, "--start", "-1.9,-0.5", "--goal", "1.9,0.5",
+                         "--radius", "0.1", "--json").stdout)
+    check(out["status"] == "ok", str(out)[:300])
+    check(out["length_unit"] == "m" and out["length"] > 3.8, f"length {out['length']}")
+    check(abs(out["length"] - out["cells"] * 0.05) < 1e-9, "length must be cells * resolution")
+    x, y = out["path_world"][0]
+    check(abs(x + 1.9) <= 0.05 and abs(y + 0.5) <= 0.05, f"start {x},{y}")
+
+
+def case_plan_pictures():
+    with tempfile.TemporaryDirectory() as d:
+        png, svg = os.path.join(d, "p.png"), os.path.join(d, "p.svg")
+        run("plan", "--map", ARENA, "--start", "4,4", "--goal", "40,40", "--expanded", "--png",
+            png, "--svg", svg)
+        with open(png, "rb") as f:
+            check(f.read(8) == b"\x89PNG\r\n\x1a\n", "PNG signature")
+        with open(svg) as f:
+            check("<svg" in f.read(), "SVG content")
+
+
+def case_plan_unreachable_and_occupied():
+    # arena: (0,0) is a wall ('@' on the first line)
+    with open(ARENA) as f:
+        lines = f.read().split("\n")[4:]
+    blocked = next((x, y) for y, row in enumerate(lines) for x, ch in enumerate(row) if ch in "@OTW")
+    free = next((x, y) for y, row in enumerate(lines) for x, ch in enumerate(row) if ch == ".")
+    out = json.loads(run("plan", "--map", ARENA, "--start", f"{free[0]},{free[1]}", "--goal",
+                         f"{blocked[0]},{blocked[1]}", "--json", expect=1).stdout)
+    check(out["status"] == "goal_occupied", str(out))
+    out = json.loads(run("plan", "--map", ARENA, "--start", f"{blocked[0]},{blocked[1]}",
+                         "--goal", f"{free[0]},{free[1]}", "--json", expect=1).stdout)
+    check(out["status"] == "start_occupied", str(out))
+    with tempfile.TemporaryDirectory() as d:
+        m = os.path.join(d, "split.map")
+        with open(m, "w") as f:
+            f.write("type octile\nheight 3\nwidth 5\nmap\n..@..\n..@..\n..@..\n")
+        out = json.loads(run("plan", "--map", m, "--start", "0,0", "--goal", "4,2", "--json",
+                             expect=1).stdout)
+        check(out["status"] == "unreachable", str(out))
+
+
+def case_error_missing_map():
+    p = run("plan", "--map", "/nonexistent/x.yaml", "--start", "0,0", "--goal", "1,1", expect=2)
+    check("/nonexistent/x.yaml" in p.stderr, "error must name the file: " + p.stderr)
+
+
+def case_error_bad_point():
+    p = run("plan", "--map", ARENA, "--start", "1,abc", "--goal", "1,1", expect=2)
+    check("--start" in p.stderr and "1,abc" in p.stderr, p.stderr)
+    p = run("plan", "--map", ARENA, "--start", "nan,1", "--goal", "1,1", expect=2)
+    check("--start" in p.stderr, p.stderr)
+
+
+def case_error_point_outside():
+    p = run("plan", "--map", ARENA, "--start", "1,1", "--goal", "100000,3", expect=2)
+    check("--goal" in p.stderr and "outside" in p.stderr, p.stderr)
+
+
+def case_error_malformed_map():
+    with tempfile.TemporaryDirectory() as d:
+        m = os.path.join(d, "bad.map")
+        with open(m, "w") as f:
+            f.write("type octile\nheight 2\nwidth 3\nmap\n...\n.X.\n")
+        p = run("plan", "--map", m, "--start", "0,0", "--goal", "2,0", expect=2)
+        check("bad.map:6" in p.stderr, "error must name file and line: " + p.stderr)
+        y = os.path.join(d, "bad.yaml")
+        with open(y, "w") as f:
+            f.write("image: missing.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n"
+                    "occupied_thresh: 0.65\nfree_thresh: 0.196\nnegate: 0\n")
+        p = run("plan", "--map", y, "--start", "0,0", "--goal", "1,1", expect=2)
+        check("missing.pgm" in p.stderr, "error must name the missing image: " + p.stderr)
+
+
+def case_demo():
+    with tempfile.TemporaryDirectory() as d:
+        out = os.path.join(d, "demo")
+        p = run("demo", "--out", out)
+        check(os.path.abspath(out) in p.stdout, "demo must print its output folder")
+        summary = json.load(open(os.path.join(out, "summary.json")))
+        check(summary["plan"]["astar"]["status"] == "ok", str(summary["plan"]))
+        check(abs(summary["plan"]["astar"]["length_m"] - summary["plan"]["dijkstra"]["length_m"])
+              < 1e-9, "A* and Dijkstra must find equally long paths")
+        check(summary["scen"]["mismatches"] == 0, str(summary["scen"]))
+        for name in ("plan_astar.png", "plan_dijkstra.png", "plan_astar.svg"):
+            check(os.path.getsize(os.path.join(out, name)) > 1000, name)
+
+
+globals()["case_" + CASE]()
+print(f"cli {CASE}: passed")

@@ -1,0 +1,201 @@
+#include "voronav/io/movingai.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "voronav/core/error.hpp"
+
+namespace voronav::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kMaxSide = 1 << 16;
+
+std::string strip(std::string s) {
+  while (!s.empty() && (s.back() == '\r' || s.back() == '\n' || s.back() == ' '))
+    s.pop_back();
+  return s;
+}
+
+int parse_int(const std::string& s, const fs::path& file, int line, const char* what) {
+  int v = 0;
+  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || p != s.data() + s.size() || s.empty())
+    throw Error(file.string(), line, std::string(what) + ": expected an integer, got '" + s + "'");
+  return v;
+}
+
+double parse_double(const std::string& s, const fs::path& file, int line, const char* what) {
+  std::istringstream in(s);
+  double v = 0;
+  in >> v;
+  if (!in || !in.eof() || !std::isfinite(v))
+    throw Error(file.string(), line, std::string(what) + ": expected a number, got '" + s + "'");
+  return v;
+}
+
+}  // namespace
+
+OccupancyGrid load_movingai_map(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(path.string(), 0, "cannot open the .map file");
+  std::string line;
+  int n = 0;
+  auto next = [&](const char* expected) {
+    if (!std::getline(in, line))
+      throw Error(path.string(), n + 1, std::string("truncated file: expected ") + expected);
+    ++n;
+    line = strip(line);
+  };
+  next("'type octile'");
+  if (line.rfind("type", 0) != 0)
+    throw Error(path.string(), n, "expected 'type octile', got '" + line + "'");
+  int height = -1, width = -1;
+  for (;;) {
+    next("'height N', 'width N' and 'map'");
+    if (line == "map") break;
+    std::istringstream ls(line);
+    std::string key, value;
+    ls >> key >> value;
+    if (key == "height")
+      height = parse_int(value, path, n, "height");
+    else if (key == "width")
+      width = parse_int(value, path, n, "width");
+    else
+      throw Error(path.string(), n, "expected 'height', 'width' or 'map', got '" + line + "'");
+  }
+  if (height <= 0 || width <= 0 || height > kMaxSide || width > kMaxSide)
+    throw Error(path.string(), n,
+                "height and width must be given and in 1.." + std::to_string(kMaxSide));
+  OccupancyGrid grid(width, height, kFree);
+  for (int row = 0; row < height; ++row) {
+    next(("map row " + std::to_string(row + 1) + " of " + std::to_string(height)).c_str());
+    if (static_cast<int>(line.size()) != width)
+      throw Error(path.string(), n,
+                  "map row has " + std::to_string(line.size()) + " characters, expected width " +
+                      std::to_string(width));
+    for (int x = 0; x < width; ++x) {
+      std::int8_t v;
+      switch (line[static_cast<std::size_t>(x)]) {
+        case '.':
+        case 'G':
+        case 'S':
+          v = kFree;
+          break;
+        case '@':
+        case 'O':
+        case 'T':
+        case 'W':
+          v = kOccupied;
+          break;
+        default:
+          throw Error(path.string(), n,
+                      std::string("unknown map character '") + line[static_cast<std::size_t>(x)] +
+                          "' at column " + std::to_string(x + 1) + " (expected . G S @ O T W)");
+      }
+      grid[movingai_to_cell(x, row, height)] = v;
+    }
+  }
+  while (std::getline(in, line)) {
+    ++n;
+    if (!strip(line).empty())
+      throw Error(path.string(), n, "extra text after the " + std::to_string(height) + " map rows");
+  }
+  return grid;
+}
+
+void save_movingai_map(const OccupancyGrid& grid, const fs::path& path) {
+  std::ofstream out(path);
+  if (!out) throw Error(path.string(), 0, "cannot write the .map file");
+  out << "type octile\nheight " << grid.height() << "\nwidth " << grid.width() << "\nmap\n";
+  for (int row = 0; row < grid.height(); ++row) {
+    std::string s(static_cast<std::size_t>(grid.width()), '.');
+    for (int x = 0; x < grid.width(); ++x)
+      if (grid[movingai_to_cell(x, row, grid.height())] != kFree)
+        s[static_cast<std::size_t>(x)] = '@';
+    out << s << '\n';
+  }
+  if (!out) throw Error(path.string(), 0, "write failed");
+}
+
+std::vector<MovingAiQuery> load_movingai_scen(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(path.string(), 0, "cannot open the .scen file");
+  std::string line;
+  if (!std::getline(in, line)) throw Error(path.string(), 1, "empty file: expected 'version 1'");
+  line = strip(line);
+  {
+    std::istringstream ls(line);
+    std::string key, ver;
+    ls >> key >> ver;
+    if (key != "version" || (ver != "1" && ver != "1.0"))
+      throw Error(path.string(), 1, "expected 'version 1', got '" + line + "'");
+  }
+  std::vector<MovingAiQuery> out;
+  int n = 1;
+  while (std::getline(in, line)) {
+    ++n;
+    line = strip(line);
+    if (line.empty()) continue;
+    std::vector<std::string> cols;
+    std::size_t start = 0;
+    for (;;) {
+      const std::size_t tab = line.find('\t', start);
+      cols.push_back(line.substr(start, tab - start));
+      if (tab == std::string::npos) break;
+      start = tab + 1;
+    }
+    if (cols.size() != 9)
+      throw Error(path.string(), n,
+                  "expected 9 tab-separated columns (bucket, map, width, height, start x, start y, "
+                  "goal x, goal y, optimal length), got " +
+                      std::to_string(cols.size()));
+    MovingAiQuery q;
+    q.line = n;
+    q.bucket = parse_int(cols[0], path, n, "bucket");
+    q.map = cols[1];
+    q.map_width = parse_int(cols[2], path, n, "width");
+    q.map_height = parse_int(cols[3], path, n, "height");
+    q.start_x = parse_int(cols[4], path, n, "start x");
+    q.start_y = parse_int(cols[5], path, n, "start y");
+    q.goal_x = parse_int(cols[6], path, n, "goal x");
+    q.goal_y = parse_int(cols[7], path, n, "goal y");
+    q.optimal_length = parse_double(cols[8], path, n, "optimal length");
+    if (q.optimal_length < 0) throw Error(path.string(), n, "optimal length must be >= 0");
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
+void save_movingai_scen(const std::vector<MovingAiQuery>& queries, const fs::path& path) {
+  std::ofstream out(path);
+  if (!out) throw Error(path.string(), 0, "cannot write the .scen file");
+  out << "version 1\n" << std::setprecision(17);
+  for (const auto& q : queries)
+    out << q.bucket << '\t' << q.map << '\t' << q.map_width << '\t' << q.map_height << '\t'
+        << q.start_x << '\t' << q.start_y << '\t' << q.goal_x << '\t' << q.goal_y << '\t'
+        << q.optimal_length << '\n';
+  if (!out) throw Error(path.string(), 0, "write failed");
+}
+
+void check_scen_fits(const std::vector<MovingAiQuery>& queries, const OccupancyGrid& grid,
+                     const fs::path& scen_path) {
+  for (const auto& q : queries) {
+    if (q.map_width != grid.width() || q.map_height != grid.height())
+      throw Error(scen_path.string(), q.line,
+                  "query is for a " + std::to_string(q.map_width) + "x" +
+                      std::to_string(q.map_height) + " map, but the map is " +
+                      std::to_string(grid.width()) + "x" + std::to_string(grid.height()));
+    auto inside = [&](int x, int y) {
+      return x >= 0 && y >= 0 && x < grid.width() && y < grid.height();
+    };
+    if (!inside(q.start_x, q.start_y) || !inside(q.goal_x, q.goal_y))
+      throw Error(scen_path.string(), q.line, "start or goal lies outside the map");
+  }
+}
+
+}  // namespace voronav::io

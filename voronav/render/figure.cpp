@@ -1,0 +1,231 @@
+#include "voronav/render/figure.hpp"
+
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "voronav/core/error.hpp"
+#include "voronav/render/internal/cairo_util.hpp"
+
+namespace voronav::render {
+namespace {
+
+std::uint32_t argb(Color c) {
+  const auto ch = [&](double v) {
+    return static_cast<std::uint32_t>(std::lround(std::clamp(v * c.a, 0.0, 1.0) * 255.0));
+  };
+  return (static_cast<std::uint32_t>(std::lround(std::clamp(c.a, 0.0, 1.0) * 255.0)) << 24) |
+         (ch(c.r) << 16) | (ch(c.g) << 8) | ch(c.b);
+}
+
+}  // namespace
+
+Figure::Figure(const GridGeometry& geometry, FigureOptions options)
+    : geometry_(geometry), options_(std::move(options)) {
+  if (geometry_.empty()) throw Error("render::Figure: the grid is empty (0 cells)");
+  const int side = std::max(geometry_.width, geometry_.height);
+  ppc_ = options_.pixels_per_cell > 0 ? options_.pixels_per_cell
+                                      : static_cast<double>(options_.auto_side_px) / side;
+  ppc_ = std::min(ppc_, static_cast<double>(options_.max_side_px) / side);
+  header_px_ = options_.title.empty() ? 0 : 28;
+  width_px_ = std::max(1, static_cast<int>(std::ceil(geometry_.width * ppc_)));
+  height_px_ = std::max(1, static_cast<int>(std::ceil(geometry_.height * ppc_))) + header_px_;
+  ops_.push_back([w = width_px_, h = height_px_](cairo_t* cr) {
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_rectangle(cr, 0, 0, w, h);
+    cairo_fill(cr);
+  });
+  if (!options_.title.empty())
+    ops_.push_back([t = options_.title](cairo_t* cr) {
+      cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+      cairo_set_font_size(cr, 15);
+      cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+      cairo_move_to(cr, 8, 19);
+      cairo_show_text(cr, t.c_str());
+    });
+}
+
+std::pair<double, double> Figure::to_pixel(Vec2 world) const {
+  const Vec2 g = geometry_.world_to_grid(world);
+  return {g.x * ppc_, header_px_ + (geometry_.height - g.y) * ppc_};
+}
+
+std::pair<double, double> Figure::to_pixel(Cell c) const {
+  return {(c.x + 0.5) * ppc_, header_px_ + (geometry_.height - c.y - 0.5) * ppc_};
+}
+
+void Figure::raster(std::function<std::uint32_t(Cell)> colour_of) {
+  const int w = geometry_.width, h = geometry_.height;
+  auto surface = std::shared_ptr<cairo_surface_t>(
+      cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h), cairo_surface_destroy);
+  cairo_surface_flush(surface.get());
+  unsigned char* data = cairo_image_surface_get_data(surface.get());
+  const int stride = cairo_image_surface_get_stride(surface.get());
+  for (int y = 0; y < h; ++y) {
+    auto* row =
+        reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(h - 1 - y) * stride);
+    for (int x = 0; x < w; ++x)
+      row[x] = colour_of(Cell{x, y});
+  }
+  cairo_surface_mark_dirty(surface.get());
+  ops_.push_back([surface, s = ppc_, top = header_px_](cairo_t* cr) {
+    cairo_save(cr);
+    cairo_translate(cr, 0, top);
+    cairo_scale(cr, s, s);
+    cairo_set_source_surface(cr, surface.get(), 0, 0);
+    cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_NEAREST);
+    cairo_paint(cr);
+    cairo_restore(cr);
+  });
+}
+
+void Figure::occupancy(const OccupancyGrid& grid) {
+  raster([&grid](Cell c) {
+    const int v = grid[c];
+    if (v < 0 || v > 100) return argb(colors::kUnknown);
+    if (v == 0) return argb(colors::kWhite);
+    if (v == 100) return argb(colors::kBlack);
+    const double s = 1.0 - v / 100.0;
+    return argb({s, s, s, 1});
+  });
+}
+
+void Figure::binary(const BinaryGrid& grid, Color on, Color off) {
+  const std::uint32_t a = argb(on), b = argb(off);
+  raster([&](Cell c) { return grid[c] != 0 ? a : b; });
+}
+
+void Figure::scalar(const GridMap<float>& field, double lo, double hi, double alpha) {
+  const double span = hi > lo ? hi - lo : 1.0;
+  raster([&](Cell c) {
+    const float v = field[c];
+    if (!std::isfinite(v)) return argb(colors::kTransparent);
+    return argb(viridis((v - lo) / span).with_alpha(alpha));
+  });
+}
+
+void Figure::labels(const GridMap<std::int32_t>& labels, double alpha) {
+  raster([&](Cell c) {
+    const std::int32_t l = labels[c];
+    return l < 0 ? argb(colors::kTransparent) : argb(palette(l).with_alpha(alpha));
+  });
+}
+
+void Figure::cells(std::span<const Cell> cells, Color color) {
+  std::vector<std::pair<double, double>> px;
+  px.reserve(cells.size());
+  for (Cell c : cells)
+    px.push_back(to_pixel(c));
+  ops_.push_back([px = std::move(px), color, s = ppc_](cairo_t* cr) {
+    internal::set_color(cr, color);
+    for (auto [x, y] : px)
+      cairo_rectangle(cr, x - s / 2, y - s / 2, s, s);
+    cairo_fill(cr);
+  });
+}
+
+void Figure::path(std::span<const Cell> path, Color color, double width_px) {
+  std::vector<std::pair<double, double>> px;
+  for (Cell c : path)
+    px.push_back(to_pixel(c));
+  ops_.push_back([px = std::move(px), color, width_px](cairo_t* cr) {
+    internal::stroke_polyline(cr, px, color, width_px, false);
+  });
+}
+
+void Figure::marker(Cell c, Color color, double radius_px, const std::string& label) {
+  const auto [x, y] = to_pixel(c);
+  ops_.push_back([=](cairo_t* cr) {
+    cairo_arc(cr, x, y, radius_px, 0, 2 * std::numbers::pi);
+    internal::set_color(cr, color);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_set_line_width(cr, 1.5);
+    cairo_stroke(cr);
+    if (!label.empty())
+      internal::draw_label(cr, x + radius_px + 3, y - radius_px, label, 13, color);
+  });
+}
+
+void Figure::cell_text(Cell c, const std::string& text, Color color, double size_px) {
+  const auto [x, y] = to_pixel(c);
+  ops_.push_back(
+      [=](cairo_t* cr) { internal::draw_centered_text(cr, x, y, text, size_px, color); });
+}
+
+void Figure::polyline(std::span<const Vec2> points, Color color, double width_px, bool closed) {
+  std::vector<std::pair<double, double>> px;
+  for (Vec2 p : points)
+    px.push_back(to_pixel(p));
+  ops_.push_back([px = std::move(px), color, width_px, closed](cairo_t* cr) {
+    internal::stroke_polyline(cr, px, color, width_px, closed);
+  });
+}
+
+void Figure::segment(Vec2 a, Vec2 b, Color color, double width_px) {
+  const Vec2 pts[2] = {a, b};
+  polyline(pts, color, width_px);
+}
+
+void Figure::point(Vec2 p, Color color, double radius_px) {
+  const auto [x, y] = to_pixel(p);
+  ops_.push_back([=](cairo_t* cr) {
+    internal::set_color(cr, color);
+    cairo_arc(cr, x, y, radius_px, 0, 2 * std::numbers::pi);
+    cairo_fill(cr);
+  });
+}
+
+void Figure::circle(Vec2 centre, double radius_m, Color fill, Color stroke, double stroke_px) {
+  const auto [x, y] = to_pixel(centre);
+  const double r = radius_m / geometry_.resolution * ppc_;
+  ops_.push_back([=](cairo_t* cr) {
+    cairo_arc(cr, x, y, std::max(r, 0.5), 0, 2 * std::numbers::pi);
+    internal::set_color(cr, fill);
+    cairo_fill_preserve(cr);
+    internal::set_color(cr, stroke);
+    cairo_set_line_width(cr, stroke_px);
+    cairo_stroke(cr);
+  });
+}
+
+void Figure::arrow(Vec2 a, Vec2 b, Color color, double width_px) {
+  const auto [x0, y0] = to_pixel(a);
+  const auto [x1, y1] = to_pixel(b);
+  ops_.push_back([=](cairo_t* cr) {
+    internal::set_color(cr, color);
+    cairo_set_line_width(cr, width_px);
+    cairo_move_to(cr, x0, y0);
+    cairo_line_to(cr, x1, y1);
+    cairo_stroke(cr);
+    const double ang = std::atan2(y1 - y0, x1 - x0), head = 4 + 2 * width_px;
+    cairo_move_to(cr, x1, y1);
+    cairo_line_to(cr, x1 - head * std::cos(ang - 0.45), y1 - head * std::sin(ang - 0.45));
+    cairo_line_to(cr, x1 - head * std::cos(ang + 0.45), y1 - head * std::sin(ang + 0.45));
+    cairo_close_path(cr);
+    cairo_fill(cr);
+  });
+}
+
+void Figure::text(Vec2 p, const std::string& text, Color color, double size_px) {
+  const auto [x, y] = to_pixel(p);
+  ops_.push_back([=](cairo_t* cr) { internal::draw_label(cr, x, y, text, size_px, color); });
+}
+
+void Figure::legend(std::vector<std::pair<std::string, Color>> entries) {
+  ops_.push_back([entries = std::move(entries), w = width_px_, h = height_px_](cairo_t* cr) {
+    internal::draw_legend(cr, entries, w, h, /*top=*/false);
+  });
+}
+
+void Figure::save(const std::filesystem::path& path) const {
+  internal::save_surface(path, width_px_, height_px_, [this](cairo_t* cr) {
+    for (const auto& op : ops_)
+      op(cr);
+  });
+}
+
+}  // namespace voronav::render

@@ -1,0 +1,135 @@
+// Tests of pictures: pixels land where the grid geometry says (row 0 at the bottom, world
+// metres through the origin), both formats are written, and bad requests fail clearly.
+#include <cairo.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "voronav/core/error.hpp"
+#include "voronav/render/figure.hpp"
+#include "voronav/render/plot.hpp"
+
+namespace voronav::render {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temp(const std::string& name) {
+  return fs::temp_directory_path() / ("voronav_render_" + std::to_string(::getpid()) + "_" + name);
+}
+
+struct Png {
+  explicit Png(const fs::path& p) : s(cairo_image_surface_create_from_png(p.c_str())) {}
+  ~Png() { cairo_surface_destroy(s); }
+  /// (r, g, b) 0..255 of pixel (x, y).
+  std::array<int, 3> rgb(int x, int y) const {
+    const auto* row = cairo_image_surface_get_data(s) + y * cairo_image_surface_get_stride(s);
+    const std::uint32_t v = reinterpret_cast<const std::uint32_t*>(row)[x];
+    return {static_cast<int>((v >> 16) & 0xff), static_cast<int>((v >> 8) & 0xff),
+            static_cast<int>(v & 0xff)};
+  }
+  int width() const { return cairo_image_surface_get_width(s); }
+  int height() const { return cairo_image_surface_get_height(s); }
+  cairo_surface_t* s;
+};
+
+TEST(Figure, OccupancyRowZeroIsAtTheBottom) {
+  OccupancyGrid g(GridGeometry{4, 3, 0.5, {{-1.0, 2.0}, 0.0}}, kFree);
+  g[Cell{0, 0}] = kOccupied;
+  g[Cell{3, 2}] = kUnknown;
+  Figure f(g.geometry(), {.pixels_per_cell = 10});
+  f.occupancy(g);
+  const fs::path p = temp("occ.png");
+  f.save(p);
+  const Png png(p);
+  ASSERT_EQ(png.width(), 40);
+  ASSERT_EQ(png.height(), 30);
+  EXPECT_EQ(png.rgb(5, 25), (std::array<int, 3>{0, 0, 0}));        // cell (0,0): bottom-left
+  EXPECT_EQ(png.rgb(35, 5), (std::array<int, 3>{205, 205, 205}));  // cell (3,2): top-right
+  EXPECT_EQ(png.rgb(15, 15), (std::array<int, 3>{255, 255, 255}));
+  fs::remove(p);
+}
+
+TEST(Figure, WorldShapesUseTheGeometry) {
+  const GridGeometry geo{10, 10, 0.1, {{5.0, 5.0}, 0.0}};
+  Figure f(geo, {.pixels_per_cell = 4});
+  // World point (5.55, 5.15) is cell (5, 1): pixel centre (22, 40 - 6) = (22, 34).
+  EXPECT_NEAR(f.to_pixel(Vec2{5.55, 5.15}).first, 22, 1e-9);
+  EXPECT_NEAR(f.to_pixel(Vec2{5.55, 5.15}).second, 34, 1e-9);
+  EXPECT_NEAR(f.to_pixel(Cell{5, 1}).first, f.to_pixel(Vec2{5.55, 5.15}).first, 1e-9);
+  EXPECT_NEAR(f.to_pixel(Cell{5, 1}).second, f.to_pixel(Vec2{5.55, 5.15}).second, 1e-9);
+  f.circle({5.55, 5.15}, 0.1, colors::kRed);
+  const fs::path p = temp("circle.png");
+  f.save(p);
+  const Png png(p);
+  EXPECT_EQ(png.rgb(22, 34), (std::array<int, 3>{0xd6, 0x27, 0x28}));
+  EXPECT_EQ(png.rgb(2, 2), (std::array<int, 3>{255, 255, 255}));
+  fs::remove(p);
+}
+
+TEST(Figure, PathAndSvg) {
+  const BinaryGrid b(20, 20, 0);
+  Figure f(b.geometry(), {.pixels_per_cell = 5, .title = "path"});
+  f.binary(b, colors::kBlack);
+  const std::vector<Cell> path = {{0, 10}, {19, 10}};
+  f.path(path, colors::kBlue, 3);
+  f.marker({0, 10}, colors::kGreen, 4, "start");
+  f.legend({{"path", colors::kBlue}});
+  const fs::path png = temp("path.png"), svg = temp("path.svg");
+  f.save(png);
+  f.save(svg);
+  const Png img(png);
+  EXPECT_EQ(img.height(), 100 + 28);  // title band
+  // The path row: y = 28 + (20 - 10.5) * 5 = 75.5; pixel x = 50 lies on it.
+  EXPECT_EQ(img.rgb(50, 75), (std::array<int, 3>{0x1f, 0x77, 0xb4}));
+  std::ifstream in(svg);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  EXPECT_NE(ss.str().find("<svg"), std::string::npos);
+  fs::remove(png);
+  fs::remove(svg);
+}
+
+TEST(Figure, Errors) {
+  EXPECT_THROW(Figure(GridGeometry{0, 5, 1.0, {}}), Error);
+  Figure f(GridGeometry{5, 5, 1.0, {}});
+  try {
+    f.save(temp("x.bmp"));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(".png or .svg"), std::string::npos);
+  }
+  EXPECT_THROW(f.save("/nonexistent-folder/x.png"), Error);
+}
+
+TEST(Figure, HugeMapIsScaledDown) {
+  Figure f(GridGeometry{100000, 50, 1.0, {}});
+  EXPECT_LE(f.width_px(), 8192);
+}
+
+TEST(Plot, LinesBarsAndErrors) {
+  Plot p({.title = "coverage", .x_label = "time [s]", .y_label = "coverage [%]"});
+  p.line("a", {0, 1, 2}, {0, 50, 90}, colors::kBlue, true);
+  p.error_bars({0, 5, 5});
+  const fs::path out = temp("plot.png");
+  p.save(out);
+  const Png png(out);
+  EXPECT_EQ(png.width(), 720);
+  fs::remove(out);
+  EXPECT_THROW(p.line("bad", {0, 1}, {1}, colors::kRed), Error);
+  Plot b;
+  b.categories({"A*", "RAS"});
+  EXPECT_THROW(b.bars("t", {1.0}, colors::kRed), Error);
+  b.bars("t", {1.0, 0.5}, colors::kRed);
+  const fs::path out2 = temp("bars.svg");
+  b.save(out2);
+  EXPECT_TRUE(fs::exists(out2));
+  fs::remove(out2);
+}
+
+}  // namespace
+}  // namespace voronav::render
