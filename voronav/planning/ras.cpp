@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -32,6 +33,33 @@ Order make_order(int k, int side, int step) {
   }
   o[n++] = static_cast<std::uint8_t>((k + 4) % 8);
   return o;
+}
+
+// Index into the optimal-order table for the goal offset (dx, dy) != (0, 0): 2 k + (cw first),
+// k = the direction closest to the goal (on an exact tie between two, the one counter-clockwise
+// of the goal), then the side nearer the goal first (counter-clockwise on a tie).
+std::size_t goal_order_index(int dx, int dy, bool eight) {
+  const double ax = std::abs(dx), ay = std::abs(dy);
+  int k = 0;
+  if (eight) {
+    constexpr double kTan22 = 0.41421356237309503;  // tan(22.5 deg); never hit exactly by integers
+    if (ay < ax * kTan22) {
+      k = dx > 0 ? 0 : 4;
+    } else if (ax < ay * kTan22) {
+      k = dy > 0 ? 2 : 6;
+    } else {
+      k = dx > 0 ? (dy > 0 ? 1 : 7) : (dy > 0 ? 3 : 5);
+    }
+  } else if (ax > ay) {
+    k = dx > 0 ? 0 : 4;
+  } else if (ay > ax) {
+    k = dy > 0 ? 2 : 6;
+  } else {  // exactly diagonal: the straight direction counter-clockwise of the goal
+    k = dx > 0 ? (dy > 0 ? 2 : 0) : (dy > 0 ? 4 : 6);
+  }
+  const Cell u = kDirs[static_cast<std::size_t>(k)];
+  const int cross = u.x * dy - u.y * dx;  // > 0: the goal lies counter-clockwise of u
+  return static_cast<std::size_t>(2 * k + (cross >= 0 ? 0 : 1));
 }
 
 bool should_stop(const CancelFn& cancel,
@@ -121,7 +149,7 @@ std::int32_t RasField::id_at(Cell region) const {
 
 Cell RasField::region_of(std::int32_t k) const {
   if (k < 0 || k >= size()) throw Error("RasField::region_of", 0, "no region " + std::to_string(k));
-  const auto p = static_cast<std::size_t>(cell_of_[static_cast<std::size_t>(k)]);
+  const auto p = static_cast<std::size_t>(cell_of_[static_cast<std::size_t>(k)]);  // k < n_
   const auto pw = static_cast<std::size_t>(w_ + 2);
   return {static_cast<int>(p % pw) - 1, static_cast<int>(p / pw) - 1};
 }
@@ -193,17 +221,20 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
   f.w_ = w;
   f.h_ = h;
   f.density_threshold_ = options.density;
-  f.cell_of_.clear();
+  f.n_ = 0;
   f.cum_.clear();
   f.step_first_.clear();
   const auto pw = static_cast<std::size_t>(w + 2);
   f.label_.assign(pw * static_cast<std::size_t>(h + 2), RasField::kObstacle);
   const std::uint8_t* blocked = regions.blocked().data().data();
+  std::size_t free_regions = 0;
   for (int y = 0; y < h; ++y) {
     std::int32_t* row = f.label_.data() + static_cast<std::size_t>(y + 1) * pw + 1;
     const std::uint8_t* src = blocked + static_cast<std::size_t>(y) * static_cast<std::size_t>(w);
-    for (int x = 0; x < w; ++x)
+    for (int x = 0; x < w; ++x) {
       row[x] = src[x] != 0 ? RasField::kObstacle : RasField::kUnnumbered;
+      free_regions += src[x] == 0 ? 1 : 0;
+    }
   }
   if (!regions.contains(start_region) || (goal_region && !regions.contains(*goal_region)))
     return RasStatus::kOutOfMap;
@@ -250,12 +281,18 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
 
   const auto start_p = static_cast<std::int32_t>(f.padded(start_region));
   label[start_p] = 0;
-  f.cell_of_.push_back(start_p);
   f.step_first_.push_back(0);
+  // The queue: ids in numbering order, at most one per free region (grown, never shrunk, so
+  // a warmed-up search allocates and clears nothing here).
+  if (f.cell_of_.size() < free_regions + 1) f.cell_of_.resize(free_regions + 1);
+  f.cell_of_[0] = start_p;
+  f.n_ = 1;
   if (until_goal && start_p == goal_p) {
     f.cum_.push_back(0);
     return RasStatus::kOk;
   }
+  std::int32_t* queue = f.cell_of_.data();
+  queue[0] = start_p;
   std::int32_t next = 1;
   std::int32_t step_end = 0;  // last id of the step being expanded
   unsigned since_check = 0;
@@ -272,47 +309,66 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
         break;
       }
     }
-    const std::ptrdiff_t p = f.cell_of_[static_cast<std::size_t>(K)];
-    const Order* order = &default_order;
-    if (optimal) {
-      const auto px = static_cast<int>(p % ipw), py = static_cast<int>(p / ipw);
-      const double dx = gx - px, dy = gy - py;
-      if (dx != 0.0 || dy != 0.0) {
-        constexpr double c = std::numbers::sqrt2 / 2.0;
-        const std::array<double, 8> dot = {dx,  c * (dx + dy),  dy,  c * (dy - dx),
-                                           -dx, -c * (dx + dy), -dy, c * (dx - dy)};
-        // Closest direction; on a tie (goal exactly between two directions) the one
-        // counter-clockwise of the goal direction. Then the closer side first, ccw on a tie.
-        int best = 0;
-        for (int k = dir_step; k < 8; k += dir_step) {
-          const double dk = dot[static_cast<std::size_t>(k)];
-          const double db = dot[static_cast<std::size_t>(best)];
-          const Cell u = kDirs[static_cast<std::size_t>(k)];
-          if (dk > db || (dk == db && dx * u.y - dy * u.x > 0.0)) best = k;
-        }
-        const double ccw = dot[static_cast<std::size_t>((best + dir_step) % 8)];
-        const double cw = dot[static_cast<std::size_t>((best + 8 - dir_step) % 8)];
-        order = &goal_orders[static_cast<std::size_t>(2 * best + (ccw >= cw ? 0 : 1))];
-      }
-    }
+    const std::ptrdiff_t p = queue[static_cast<std::size_t>(K)];
     bool found = false;
-    for (int i = 0; i < ndirs; ++i) {
-      const std::size_t k = (*order)[static_cast<std::size_t>(i)];
-      const std::ptrdiff_t q = p + off[k];
-      if (label[q] != RasField::kUnnumbered) continue;
-      if (no_cut && (k & 1U) != 0 &&
-          (label[p + off[(k + 7) % 8]] == RasField::kObstacle ||
-           label[p + off[(k + 1) % 8]] == RasField::kObstacle))
-        continue;
-      if (D > 0 && density(q) < D) {
-        label[q] = RasField::kBelowDensity;
-        continue;
+    if (!optimal) {
+      // Default order: the directions themselves. Branches per neighbour follow the regular
+      // pattern of the wave front and predict well (as in a plain BFS).
+      for (int k = 0; k < 8; k += dir_step) {
+        const std::ptrdiff_t q = p + off[static_cast<std::size_t>(k)];
+        if (label[q] != RasField::kUnnumbered) continue;
+        if (no_cut && (k & 1) != 0 &&
+            (label[p + off[static_cast<std::size_t>(k - 1)]] == RasField::kObstacle ||
+             label[p + off[static_cast<std::size_t>((k + 1) & 7)]] == RasField::kObstacle))
+          continue;
+        if (D > 0 && density(q) < D) {
+          label[q] = RasField::kBelowDensity;
+          continue;
+        }
+        label[q] = next;
+        queue[next++] = static_cast<std::int32_t>(q);
+        if (until_goal && q == goal_p) {
+          found = true;
+          break;
+        }
       }
-      label[q] = next++;
-      f.cell_of_.push_back(static_cast<std::int32_t>(q));
-      if (until_goal && q == goal_p) {
-        found = true;
-        break;
+    } else {
+      // Optimal order: it changes from region to region, so per-neighbour branches would not
+      // predict. Neighbour states become bit masks over the directions (bit k = direction k)
+      // from one load each, the mask is permuted into this region's order, and only its set bits
+      // are visited.
+      unsigned unnumbered = 0, obstacle = 0;
+      for (int k = 0; k < 8; k += dir_step) {
+        const std::int32_t v = label[p + off[static_cast<std::size_t>(k)]];
+        unnumbered |= static_cast<unsigned>(v == RasField::kUnnumbered) << k;
+        obstacle |= static_cast<unsigned>(v == RasField::kObstacle) << k;
+      }
+      if (no_cut && eight) {  // a diagonal needs both flanking straight neighbours free
+        const unsigned flank =
+            (obstacle << 1) | (obstacle >> 7) | (obstacle >> 1) | (obstacle << 7);
+        unnumbered &= ~(flank & 0xAAU);
+      }
+      const Order* order = &default_order;
+      const auto px = static_cast<int>(p % ipw), py = static_cast<int>(p / ipw);
+      const int dx = gx - px, dy = gy - py;
+      if (dx != 0 || dy != 0) order = &goal_orders[goal_order_index(dx, dy, eight)];
+      unsigned mask = 0;  // bit i = the i-th direction of the order can be numbered
+      for (int i = 0; i < ndirs; ++i)
+        mask |= ((unnumbered >> (*order)[static_cast<std::size_t>(i)]) & 1U) << i;
+      while (mask != 0) {
+        const int i = std::countr_zero(mask);
+        mask &= mask - 1;
+        const std::ptrdiff_t q = p + off[(*order)[static_cast<std::size_t>(i)]];
+        if (D > 0 && density(q) < D) {
+          label[q] = RasField::kBelowDensity;
+          continue;
+        }
+        label[q] = next;
+        queue[next++] = static_cast<std::int32_t>(q);
+        if (until_goal && q == goal_p) {
+          found = true;
+          break;
+        }
       }
     }
     f.cum_.push_back(next - 1);
@@ -321,6 +377,7 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
       break;
     }
   }
+  f.n_ = next;
   if (next - 1 > step_end) f.step_first_.push_back(step_end + 1);
   return status;
 }

@@ -112,7 +112,7 @@ class RasField {
   static constexpr std::int32_t kUnnumbered = -3;    ///< free, not reached (or search stopped)
 
   /// Number of numbered regions (the paper's "region num").
-  [[nodiscard]] std::int32_t size() const { return static_cast<std::int32_t>(cell_of_.size()); }
+  [[nodiscard]] std::int32_t size() const { return n_; }
   [[nodiscard]] int width() const { return w_; }
   [[nodiscard]] int height() const { return h_; }
   [[nodiscard]] int density_threshold() const { return density_threshold_; }
@@ -142,6 +142,7 @@ class RasField {
   }
   int w_ = 0, h_ = 0;
   int density_threshold_ = 0;
+  std::int32_t n_ = 0;                    ///< numbered regions
   std::vector<std::int32_t> label_;       ///< padded (w+2)x(h+2): id or a negative state
   std::vector<std::int32_t> cell_of_;     ///< id -> padded index (the numbering is the queue)
   std::vector<std::int32_t> cum_;         ///< cum_[K] = sum_{i<=K} N_i for expanded K
