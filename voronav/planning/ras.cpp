@@ -444,7 +444,8 @@ RasResult RasPlanner::plan_ras(const BinaryGrid& grid, Cell start, Cell goal) {
 }
 
 PlanResult RasPlanner::plan(const BinaryGrid& grid, Cell start, Cell goal) {
-  const RasResult r = plan_ras(grid, start, goal);
+  last_ = plan_ras(grid, start, goal);
+  const RasResult& r = last_;
   PlanResult out;
   out.status = to_plan_status(r.status);
   out.expanded = static_cast<std::size_t>(std::max(0, r.regions));

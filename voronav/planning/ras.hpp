@@ -193,11 +193,14 @@ class RasPlanner : public GridPlanner {
   [[nodiscard]] const RasField& field() const { return search_.field(); }
   /// The region grid of the last plan()/plan_ras() call.
   [[nodiscard]] const RegionGrid& region_grid() const { return regions_; }
+  /// The full RAS answer of the last plan() call (ids, regions, waypoints).
+  [[nodiscard]] const RasResult& last_result() const { return last_; }
 
  private:
   RasOptions ras_;
   RasSearch search_;
   RegionGrid regions_;
+  RasResult last_;
 };
 
 /// Region size and density for a robot of diameter robot_size [m] on a map of `resolution`
