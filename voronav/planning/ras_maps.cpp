@@ -29,9 +29,9 @@ Cell image_cell(const BinaryGrid& g, int x, int y) {
 RasStandInMap ras_table3_map() {
   RasStandInMap m{"ras_table3", BinaryGrid(512, 512, 0), {}, {}};
   BinaryGrid& g = m.grid;
-  block(g, 0, 352, 384, 368);    // lower wall, open on the right
-  block(g, 128, 176, 512, 192);  // upper wall, open on the left
-  block(g, 192, 64, 224, 176);   // a pillar between the upper wall and the top
+  block(g, 0, 352, 320, 368);    // lower wall, open on the right
+  block(g, 192, 176, 512, 192);  // upper wall, open on the left
+  block(g, 256, 64, 288, 176);   // a pillar between the upper wall and the top
   block(g, 96, 416, 128, 512);   // a stub from the bottom edge
   block(g, 256, 224, 320, 288);  // a block in the middle corridor
   m.start = image_cell(g, 40, 472);

@@ -3,8 +3,10 @@
 // use the paper's image frame for the layout (x right, y down, 1 pixel = 1 cell); the grids use
 // voronav cells (row 0 at the bottom), so image (x, y) is cell (x, H - 1 - y).
 //
-// Table 3 (figure 12): 512x512, three walls forcing an S-shaped route from the lower left to the
-// upper right; walls are 16-cell aligned so region sizes 8 and 16 see the same obstacles.
+// Table 3 (figure 12): 512x512, two walls forcing an S-shaped route from the lower left to the
+// upper right, a pillar, a stub and a block; everything is 16-cell aligned so region sizes 8 and 16
+// see the same obstacles. Wall lengths were chosen so that the minimum region counts (56 at
+// r = 16, 107 at r = 8) are close to the paper's 57 and 106.
 // Table 4 (figure 13): 1000x1000, start (100,250), goal (700,250); two long walls force the route
 // down under the first wall, through a field of 4x4 dots whose spacing grows with depth (gaps
 // 4, 8 and 32 cells), and back up over the second wall. The gaps decide which rows a robot of

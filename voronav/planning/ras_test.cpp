@@ -17,6 +17,7 @@
 #include "voronav/field/distance_transform.hpp"
 #include "voronav/planning/astar.hpp"
 #include "voronav/planning/planner_factory.hpp"
+#include "voronav/planning/ras_maps.hpp"
 
 namespace voronav::planning {
 namespace {
@@ -578,6 +579,38 @@ TEST(Ras, FactoryBuildsRas) {
   EXPECT_GT(r.expanded, 0u);
   const auto names = planner_names();
   EXPECT_NE(std::find(names.begin(), names.end(), "ras"), names.end());
+}
+
+TEST(RasMaps, StandInsAreDeterministicAndMatchTheirDocumentation) {
+  const RasStandInMap t3 = ras_table3_map();
+  EXPECT_EQ(t3.grid, ras_table3_map().grid);
+  ASSERT_EQ(t3.grid.width(), 512);
+  ASSERT_EQ(t3.grid.height(), 512);
+  const RasOptions nc{.corner_rule = RasCornerRule::kNoCornerCutting};
+  for (const auto& [r, want] : {std::pair{16, 56u}, std::pair{8, 107u}}) {
+    RasOptions o = nc;
+    o.region_size = r;
+    RasPlanner ras(o);
+    const RasResult res = ras.plan_ras(t3.grid, t3.start, t3.goal);
+    ASSERT_TRUE(res.ok()) << r;
+    EXPECT_EQ(res.path_regions.size(), want) << r;
+  }
+  const RasStandInMap t4 = ras_table4_map();
+  ASSERT_EQ(t4.grid.width(), 1000);
+  EXPECT_EQ(t4.start, (Cell{100, 749}));  // image (100, 250)
+  EXPECT_EQ(t4.goal, (Cell{700, 749}));   // image (700, 250)
+  // Density 8 must take a longer route than density 0 (the dot field), at both region sizes.
+  for (const int r : {2, 8}) {
+    RasOptions o = nc;
+    o.region_size = r;
+    RasPlanner d0(o);
+    o.density = 8;
+    RasPlanner d8(o);
+    const RasResult a = d0.plan_ras(t4.grid, t4.start, t4.goal);
+    const RasResult b = d8.plan_ras(t4.grid, t4.start, t4.goal);
+    ASSERT_TRUE(a.ok() && b.ok()) << r;
+    EXPECT_GT(b.path_regions.size(), a.path_regions.size()) << r;
+  }
 }
 
 }  // namespace
