@@ -131,7 +131,7 @@ void save_ras_picture(const PlanPicture& pic, const planning::RasPlanner& ras,
       fig.segment(g.grid_to_world({0.0, cy}), g.grid_to_world({1.0 * g.width, cy}), grey, 0.6);
     }
   }
-  if (region_px >= 16.0 && f.size() <= 4000) {
+  if (region_px >= 16.0 && f.size() <= 300) {  // ids only where they stay readable
     const double size = std::clamp(region_px * 0.32, 6.0, 13.0);
     for (std::int32_t k = 0; k < f.size(); ++k) {
       const Cell reg = f.region_of(k);
