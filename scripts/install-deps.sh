@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages voronav needs, only those that are missing (apt-get, as root;
-# uses sudo when not root). Usage: scripts/install-deps.sh [--tests] [--browser]
+# uses sudo when not root). Usage: scripts/install-deps.sh [--tests]  (--tests adds the browser test's)
 set -euo pipefail
 pkgs=(cmake ninja-build g++ pkg-config python3 libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
       libfmt-dev libspdlog-dev libboost-dev libcairo2-dev libpng-dev libtbb-dev
-      libgtest-dev libgmock-dev libbenchmark-dev)
+      libgtest-dev libgmock-dev libbenchmark-dev cyclonedds-dev cyclonedds-tools)
 for arg in "$@"; do
   case "$arg" in
-    --tests) ;;  # the test build needs nothing beyond the list above
+    # The browser test of the replay page: Debian's Chromium, driven by Playwright from npm.
+    --tests) pkgs+=(chromium)
+             command -v npm >/dev/null || pkgs+=(nodejs npm) ;;
     *) echo "install-deps.sh: unknown option '$arg'" >&2; exit 2 ;;
   esac
 done

@@ -5,7 +5,7 @@
 namespace voronav::cli {
 
 void save_plan_picture(const PlanPicture& pic, const std::filesystem::path& out) {
-  render::Figure fig(pic.map.geometry());
+  render::Figure fig(pic.map.geometry(), {.crop = render::known_bounds(pic.map)});
   fig.occupancy(pic.map);
   if (pic.show_inflation) {
     // Cells blocked only by the robot radius, in light red.

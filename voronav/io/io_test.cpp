@@ -206,6 +206,7 @@ TEST(MovingAi, LoadsArenaAndAllScenQueriesFit) {
   EXPECT_EQ(q[0].start_y, 11);
   EXPECT_DOUBLE_EQ(q[0].optimal_length, 1.0);
   EXPECT_EQ(q[0].line, 2);
+  EXPECT_DOUBLE_EQ(q[0].optimal_rounding, 0.0);  // "1": an integer is exact
   // Every query's start and goal are passable in the file frame.
   for (const auto& s : q) {
     EXPECT_EQ(g[movingai_to_cell(s.start_x, s.start_y, g.height())], kFree);
@@ -241,8 +242,8 @@ TEST(MovingAi, RoundTripRandomMapsAndScen) {
   }
   std::vector<MovingAiQuery> q(3);
   for (int i = 0; i < 3; ++i)
-    q[static_cast<std::size_t>(i)] = {i,      "maps/x.map",  10,   12, i, 2 * i, 9 - i,
-                                      11 - i, 1.0 / (i + 3), i + 2};
+    q[static_cast<std::size_t>(i)] = {i,      "maps/x.map",  10,  12,   i, 2 * i, 9 - i,
+                                      11 - i, 1.0 / (i + 3), 0.0, i + 2};
   save_movingai_scen(q, dir / "r.scen");
   const auto back = load_movingai_scen(dir / "r.scen");
   ASSERT_EQ(back.size(), 3u);
@@ -267,6 +268,8 @@ TEST(MovingAi, MalformedFiles) {
   expect_error([&] { (void)load_movingai_map(dir / "e.map"); }, {"e.map:5", "'#'", "column 2"});
   write_text(dir / "f.map", "type octile\nheight 0\nwidth 2\nmap\n");
   expect_error([&] { (void)load_movingai_map(dir / "f.map"); }, {"f.map", "height and width"});
+  write_text(dir / "r.scen", "version 1\n0\tm.map\t10\t10\t1\t1\t2\t2\t101.054\n");
+  EXPECT_DOUBLE_EQ(load_movingai_scen(dir / "r.scen")[0].optimal_rounding, 0.001);
   write_text(dir / "a.scen", "version 2\n");
   expect_error([&] { (void)load_movingai_scen(dir / "a.scen"); }, {"a.scen:1", "version 1"});
   write_text(dir / "b.scen", "version 1\n0\tm.map\t10\t10\t1\t1\t2\t2\n");

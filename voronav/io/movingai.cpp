@@ -1,5 +1,6 @@
 #include "voronav/io/movingai.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -165,6 +166,12 @@ std::vector<MovingAiQuery> load_movingai_scen(const fs::path& path) {
     q.goal_x = parse_int(cols[6], path, n, "goal x");
     q.goal_y = parse_int(cols[7], path, n, "goal y");
     q.optimal_length = parse_double(cols[8], path, n, "optimal length");
+    if (const std::size_t dot = cols[8].find('.'); dot != std::string::npos) {
+      std::size_t end = dot + 1;
+      while (end < cols[8].size() && std::isdigit(static_cast<unsigned char>(cols[8][end])))
+        ++end;
+      q.optimal_rounding = std::pow(10.0, -static_cast<double>(end - dot - 1));
+    }
     if (q.optimal_length < 0) throw Error(path.string(), n, "optimal length must be >= 0");
     out.push_back(std::move(q));
   }

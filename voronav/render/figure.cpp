@@ -23,9 +23,35 @@ std::uint32_t argb(Color c) {
 
 }  // namespace
 
+CellBox known_bounds(const OccupancyGrid& grid, int margin) {
+  CellBox b{grid.width(), grid.height(), -1, -1};
+  for (int y = 0; y < grid.height(); ++y)
+    for (int x = 0; x < grid.width(); ++x)
+      if (grid[Cell{x, y}] != kUnknown) {
+        b.x0 = std::min(b.x0, x);
+        b.y0 = std::min(b.y0, y);
+        b.x1 = std::max(b.x1, x + 1);
+        b.y1 = std::max(b.y1, y + 1);
+      }
+  if (b.x1 < 0) return {0, 0, grid.width(), grid.height()};
+  return {std::max(0, b.x0 - margin), std::max(0, b.y0 - margin),
+          std::min(grid.width(), b.x1 + margin), std::min(grid.height(), b.y1 + margin)};
+}
+
 Figure::Figure(const GridGeometry& geometry, FigureOptions options)
     : geometry_(geometry), options_(std::move(options)) {
   if (geometry_.empty()) throw Error("render::Figure: the grid is empty (0 cells)");
+  const CellBox& c = options_.crop;
+  if (c.x1 > c.x0 || c.y1 > c.y0) {
+    if (c.x0 < 0 || c.y0 < 0 || c.x1 > geometry.width || c.y1 > geometry.height || c.x1 <= c.x0 ||
+        c.y1 <= c.y0)
+      throw Error("render::Figure: crop box is empty or outside the grid");
+    offset_ = {c.x0, c.y0};
+    geometry_.width = c.x1 - c.x0;
+    geometry_.height = c.y1 - c.y0;
+    geometry_.origin.position = geometry.origin.transform(
+        Vec2{static_cast<double>(c.x0), static_cast<double>(c.y0)} * geometry.resolution);
+  }
   const int side = std::max(geometry_.width, geometry_.height);
   ppc_ = options_.pixels_per_cell > 0 ? options_.pixels_per_cell
                                       : static_cast<double>(options_.auto_side_px) / side;
@@ -54,6 +80,7 @@ std::pair<double, double> Figure::to_pixel(Vec2 world) const {
 }
 
 std::pair<double, double> Figure::to_pixel(Cell c) const {
+  c = c - offset_;
   return {(c.x + 0.5) * ppc_, header_px_ + (geometry_.height - c.y - 0.5) * ppc_};
 }
 
@@ -68,7 +95,7 @@ void Figure::raster(std::function<std::uint32_t(Cell)> colour_of) {
     auto* row =
         reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(h - 1 - y) * stride);
     for (int x = 0; x < w; ++x)
-      row[x] = colour_of(Cell{x, y});
+      row[x] = colour_of(Cell{x, y} + offset_);
   }
   cairo_surface_mark_dirty(surface.get());
   ops_.push_back([surface, s = ppc_, top = header_px_](cairo_t* cr) {

@@ -22,12 +22,24 @@ struct _cairo;  // cairo_t, kept out of the public header
 
 namespace voronav::render {
 
+/// A rectangle of cells, [x0, x1) x [y0, y1).
+struct CellBox {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+/// The bounding box of the known (not unknown) cells of `grid`, grown by `margin` cells and
+/// clipped to the grid; the whole grid when nothing is known. Maps from SLAM are mostly unknown
+/// space around the building: cropping to this box makes the building fill the picture.
+[[nodiscard]] CellBox known_bounds(const OccupancyGrid& grid, int margin = 5);
+
 struct FigureOptions {
   /// Pixels per cell; 0 = automatic: the larger side of the map becomes `auto_side_px`.
   double pixels_per_cell = 0.0;
   int auto_side_px = 900;
   int max_side_px = 8192;  ///< hard limit for huge maps (pixels_per_cell is reduced to fit)
   std::string title{};     ///< drawn in a band above the map when not empty
+  /// Draw only these cells of the grid (e.g. known_bounds(map)); empty box = the whole grid.
+  CellBox crop{};
 };
 
 class Figure {
@@ -78,7 +90,8 @@ class Figure {
   using Op = std::function<void(_cairo*)>;
   void raster(std::function<std::uint32_t(Cell)> argb);
 
-  GridGeometry geometry_;
+  GridGeometry geometry_;  ///< of the drawn part (the crop)
+  Cell offset_{};          ///< grid cell of the crop's cell (0, 0)
   FigureOptions options_;
   double ppc_ = 1.0;
   int header_px_ = 0;

@@ -94,6 +94,35 @@ TEST(Figure, PathAndSvg) {
   fs::remove(svg);
 }
 
+TEST(Figure, CropToKnownCells) {
+  OccupancyGrid g(GridGeometry{50, 40, 0.1, {{-2.0, 1.0}, 0.0}}, kUnknown);
+  for (int y = 10; y < 20; ++y)
+    for (int x = 20; x < 30; ++x)
+      g[Cell{x, y}] = kFree;
+  g[Cell{20, 10}] = kOccupied;
+  const CellBox b = known_bounds(g, 2);
+  EXPECT_EQ(b.x0, 18);
+  EXPECT_EQ(b.y0, 8);
+  EXPECT_EQ(b.x1, 32);
+  EXPECT_EQ(b.y1, 22);
+  Figure f(g.geometry(), {.pixels_per_cell = 10, .crop = b});
+  EXPECT_EQ(f.width_px(), 140);
+  EXPECT_EQ(f.height_px(), 140);
+  // Cell (20, 10) is crop cell (2, 2): pixel centre (25, 140 - 25); its world centre agrees.
+  EXPECT_NEAR(f.to_pixel(Cell{20, 10}).first, 25, 1e-9);
+  EXPECT_NEAR(f.to_pixel(g.geometry().cell_center(Cell{20, 10})).second, 115, 1e-9);
+  f.occupancy(g);
+  const fs::path p = temp("crop.png");
+  f.save(p);
+  const Png png(p);
+  EXPECT_EQ(png.rgb(25, 115), (std::array<int, 3>{0, 0, 0}));
+  EXPECT_EQ(png.rgb(45, 95), (std::array<int, 3>{255, 255, 255}));
+  EXPECT_EQ(png.rgb(5, 5), (std::array<int, 3>{205, 205, 205}));
+  fs::remove(p);
+  EXPECT_THROW(Figure(g.geometry(), {.crop = {0, 0, 60, 10}}), Error);
+  EXPECT_EQ(known_bounds(OccupancyGrid(4, 4, kUnknown)).x1, 4);
+}
+
 TEST(Figure, Errors) {
   EXPECT_THROW(Figure(GridGeometry{0, 5, 1.0, {}}), Error);
   Figure f(GridGeometry{5, 5, 1.0, {}});
