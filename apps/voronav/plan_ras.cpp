@@ -94,10 +94,11 @@ void save_ras_picture(const PlanPicture& pic, const planning::RasPlanner& ras,
   const planning::RasResult& r = ras.last_result();
   const GridGeometry& g = pic.map.geometry();
   const int rs = rg.region_size();
-  render::Figure fig(g, {.title = "RAS: region size " + std::to_string(rs) + ", density " +
-                                  std::to_string(ras.ras_options().density) + ", " +
-                                  std::to_string(r.regions) + " regions numbered, " +
-                                  std::to_string(r.path_regions.size()) + " path regions"});
+  const std::string title = "RAS: region size " + std::to_string(rs) + ", density " +
+                            std::to_string(ras.ras_options().density) + ", " +
+                            std::to_string(r.regions) + " regions numbered, " +
+                            std::to_string(r.path_regions.size()) + " path regions";
+  render::Figure fig(g, {.title = title, .crop = render::known_bounds(pic.map)});
   fig.occupancy(pic.map);
   if (rg.width() == 0) {
     fig.save(out);
