@@ -24,10 +24,9 @@
 //    lowest ids and are expanded first; the wave reaches the goal after numbering fewer regions
 //    (Table 4 rows 5 vs 7) and the path keeps the minimum number of regions;
 //  - diagonal steps may pass a blocked corner, as in figure 2 (RasCornerRule; kNoCornerCutting
-//  gives
-//    the graph of this library's A*, used for the comparisons); density is always counted over the
-//    8 surrounding regions, also with 4-neighbour expansion; the start region is exempt from the
-//    density rule by default (the robot already stands there).
+//    gives the graph of this library's A*, used for the comparisons);
+//  - density is counted over the 8 surrounding regions, also with 4-neighbour expansion; the start
+//    region is exempt from the density rule by default (the robot already stands there).
 #pragma once
 
 #include <chrono>
