@@ -6,6 +6,7 @@
 #include "cli_common.hpp"
 #include "command.hpp"
 #include "plan_picture.hpp"
+#include "plan_ras.hpp"
 #include "voronav/planning/planner_factory.hpp"
 #include "voronav/topology/topo_planner.hpp"
 
@@ -22,6 +23,7 @@ struct PlanArgs {
   bool show_expanded = false;
   std::filesystem::path png, svg;
   bool json = false;
+  RasCliArgs ras;
 };
 
 void run(const PlanArgs& a) {
@@ -36,14 +38,22 @@ void run(const PlanArgs& a) {
   // "topo": A* over the topological graph (seed 003), expanded to a grid path through the doors.
   std::unique_ptr<planning::GridPlanner> planner =
       a.planner == "topo" ? std::make_unique<topology::TopologicalPlanner>(opt)
-                          : planning::make_planner(planning::parse_planner_kind(a.planner), opt);
+                          : planning::make_planner(planning::parse_planner_kind(a.planner), opt,
+                                                   to_ras_options(a.ras));
   const planning::PlanResult r = planner->plan(grid, start, goal);
+  const auto* ras = dynamic_cast<const planning::RasPlanner*>(planner.get());
 
   const double res = ctx.map.grid.resolution();
   if (!a.png.empty() || !a.svg.empty()) {
     PlanPicture pic{ctx.map.grid, grid, start, goal, &r, a.radius > 0};
-    if (!a.png.empty()) save_plan_picture(pic, a.png);
-    if (!a.svg.empty()) save_plan_picture(pic, a.svg);
+    for (const auto& out : {a.png, a.svg}) {
+      if (out.empty()) continue;
+      if (ras != nullptr) {
+        save_ras_picture(pic, *ras, out);
+      } else {
+        save_plan_picture(pic, out);
+      }
+    }
   }
   if (a.json) {
     nlohmann::json path = nlohmann::json::array(), world = nlohmann::json::array();
@@ -52,15 +62,17 @@ void run(const PlanArgs& a) {
       const Vec2 w = ctx.map.grid.geometry().cell_center(c);
       world.push_back({w.x, w.y});
     }
-    print_json({{"status", planning::to_string(r.status)},
-                {"planner", planner->name()},
-                {"length", r.length_cells * res},
-                {"length_unit", "m"},
-                {"cells", r.length_cells},
-                {"expanded", r.expanded},
-                {"time_ms", r.time_ms},
-                {"path", path},
-                {"path_world", world}});
+    nlohmann::json out{{"status", planning::to_string(r.status)},
+                       {"planner", planner->name()},
+                       {"length", r.length_cells * res},
+                       {"length_unit", "m"},
+                       {"cells", r.length_cells},
+                       {"expanded", r.expanded},
+                       {"time_ms", r.time_ms},
+                       {"path", path},
+                       {"path_world", world}};
+    if (ras != nullptr) add_ras_json(out, *ras, ctx);
+    print_json(out);
   } else {
     std::cout << "status:   " << planning::to_string(r.status) << "\n";
     if (r.ok()) {
@@ -68,6 +80,7 @@ void run(const PlanArgs& a) {
                 << " cells, octile)\n"
                 << "steps:    " << (r.path.size() - 1) << "\n";
     }
+    if (ras != nullptr) print_ras_text(*ras);
     std::cout << "expanded: " << r.expanded << "\n"
               << "time:     " << r.time_ms << " ms\n";
   }
@@ -85,7 +98,7 @@ void setup(CLI::App& app) {
                   "metres in the world frame for ROS and image maps (see --cells)")
       ->required();
   cmd->add_option("--goal", args->goal, "Goal X,Y, same frame as --start")->required();
-  cmd->add_option("--planner", args->planner, "astar | dijkstra | topo")->capture_default_str();
+  cmd->add_option("--planner", args->planner, "astar | dijkstra | ras | topo")->capture_default_str();
   cmd->add_option("--connectivity", args->connectivity, "4 or 8 neighbours")
       ->check(CLI::IsMember({4, 8}))
       ->capture_default_str();
@@ -101,6 +114,7 @@ void setup(CLI::App& app) {
   cmd->add_flag("--json", args->json,
                 "JSON output: status, length [m], cells (length in cells), expanded, time_ms, "
                 "path (cells), path_world (m)");
+  add_ras_options(cmd, args->ras);
   cmd->callback([args] { run(*args); });
 }
 

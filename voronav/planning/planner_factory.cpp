@@ -6,17 +6,27 @@
 
 namespace voronav::planning {
 
-std::vector<std::string_view> planner_names() { return {"astar", "dijkstra"}; }
+std::vector<std::string_view> planner_names() {
+  return {"astar", "dijkstra", "ras"};
+}
 
 PlannerKind parse_planner_kind(std::string_view name) {
   if (name == "astar" || name == "a*") return PlannerKind::kAStar;
   if (name == "dijkstra") return PlannerKind::kDijkstra;
+  if (name == "ras") return PlannerKind::kRas;
   throw Error("--planner", 0,
-              "unknown planner '" + std::string(name) + "'; expected one of: astar, dijkstra");
+              "unknown planner '" + std::string(name) + "'; expected one of: astar, dijkstra, ras");
 }
 
 std::unique_ptr<GridPlanner> make_planner(PlannerKind kind, PlannerOptions options) {
+  return make_planner(kind, std::move(options), RasOptions{});
+}
+
+std::unique_ptr<GridPlanner> make_planner(PlannerKind kind, PlannerOptions options,
+                                          const RasOptions& ras) {
   switch (kind) {
+    case PlannerKind::kRas:
+      return std::make_unique<RasPlanner>(ras, std::move(options));
     case PlannerKind::kAStar:
       return std::make_unique<AStarPlanner>(std::move(options));
     case PlannerKind::kDijkstra:
