@@ -153,12 +153,32 @@ def case_demo():
         p = run("demo", "--out", out)
         check(os.path.abspath(out) in p.stdout, "demo must print its output folder")
         summary = json.load(open(os.path.join(out, "summary.json")))
-        check(summary["plan"]["astar"]["status"] == "ok", str(summary["plan"]))
-        check(abs(summary["plan"]["astar"]["length_m"] - summary["plan"]["dijkstra"]["length_m"])
-              < 1e-9, "A* and Dijkstra must find equally long paths")
-        check(summary["scen"]["mismatches"] == 0, str(summary["scen"]))
-        for name in ("plan_astar.png", "plan_dijkstra.png", "plan_astar.svg"):
+        plan = summary["plan"]
+        check(plan["astar"]["status"] == "ok", str(plan))
+        check(abs(plan["astar"]["length_m"] - plan["dijkstra"]["length_m"]) < 1e-9,
+              "A* and Dijkstra must find equally long paths")
+        # The topological and RAS paths are not shorter than the optimal grid path.
+        for name in ("topo", "ras"):
+            check(plan[name]["status"] == "ok", name + ": " + str(plan[name]))
+            check(plan[name]["length_m"] >= plan["astar"]["length_m"] - 1e-9, name)
+        check(summary["map"]["agreement_pct"] > 95, str(summary["map"]))
+        check(summary["topology"]["regions"] > 1 and summary["topology"]["critical_points"] > 0,
+              str(summary["topology"]))
+        co = summary["coordination"]
+        check(co["valid"] is True and co["status"] == "ok", str(co))
+        check(co["makespan_s"] >= max(a["arrival_s"] for a in co["agents"]) - 1e-9, str(co))
+        check(summary["networked"]["success"] is True, str(summary["networked"]))
+        check(summary["exploration"]["collisions"] == 0, str(summary["exploration"]))
+        check(summary["exploration"]["coverage_pct"] > 20, str(summary["exploration"]))
+        check(summary["movingai"]["mismatches"] == 0 and summary["movingai"]["unsolved"] == 0,
+              str(summary["movingai"]))
+        for name in ("1_occupancy_map.png", "3_plan_astar.png", "3_plan_ras.png",
+                     "4_coordination.png", "2_topology/f_graph.png"):
             check(os.path.getsize(os.path.join(out, name)) > 1000, name)
+        for page in ("index.html", "netsim.html", "explore.html"):
+            html = open(os.path.join(out, page)).read()
+            check("voronav-recording" in html and "http://" not in html.replace(
+                "http://www.w3.org", ""), page + " must be a self-contained replay page")
 
 
 globals()["case_" + CASE]()

@@ -1,10 +1,10 @@
 // voronav demo: the README's first command. On a bundled real floor plan, in one run: build an
 // occupancy map from a simulated laser sweep (seed 003), its Voronoi diagram and topological map,
-// plan with A*, Dijkstra and the topological planner, coordinate a team with collision maps
-// (seed 002), find a route with networked robots through an obstacle change (seed 000), explore
-// an unknown copy of the map with a swarm (seed 004), and check the grid planners on a Moving AI
-// benchmark. Writes pictures of each stage, summary.json and a replay page (index.html) into an
-// output folder and prints its path.
+// plan with A*, Dijkstra, the topological planner and RAS (seed 001), coordinate a team with
+// collision maps (seed 002), find a route with networked robots through an obstacle change (seed
+// 000), explore an unknown copy of the map with a swarm (seed 004), and check the grid planners on
+// a Moving AI benchmark. Writes pictures of each stage, summary.json and a replay page (index.html)
+// into an output folder and prints its path.
 #include <unistd.h>
 
 #include <chrono>
@@ -19,6 +19,7 @@
 #include "cli_common.hpp"
 #include "command.hpp"
 #include "plan_picture.hpp"
+#include "plan_ras.hpp"
 #include "recordings.hpp"
 #include "topo_pictures.hpp"
 #include "voronav/coordination/coordinator.hpp"
@@ -162,7 +163,9 @@ struct Demo {
   void planning_stage() {
     const double radius = 0.2;  // [m]
     const BinaryGrid grid = planning::make_planning_grid(built_blocked, radius);
-    const auto [start, goal] = far_apart_cells(grid);
+    // Start and goal far apart and in the open (0.6 m from walls), so every planner, RAS with
+    // its density rule included, can use them.
+    const auto [start, goal] = far_apart_cells(planning::make_planning_grid(built_blocked, 0.6));
     nlohmann::json j{
         {"robot_radius_m", radius},
         {"start_m",
@@ -191,6 +194,23 @@ struct Demo {
         for (Cell c : r.path)
           astar_path.push_back(built_map.geometry().cell_center(c));
     }
+    // RAS (seed 001) on the raw map: region size and density from the robot's size, so the
+    // density rule, not an inflated grid, keeps the robot off the walls.
+    const auto rp = planning::ras_parameters_for_robot(2.0 * radius, built_map.resolution());
+    planning::RasOptions ro;
+    ro.region_size = rp.region_size;
+    ro.density = rp.density;
+    ro.corner_rule = planning::RasCornerRule::kNoCornerCutting;
+    planning::RasPlanner ras(ro);
+    const auto rr = ras.plan(built_blocked, start, goal);
+    save_ras_picture({built_map, built_blocked, start, goal, &rr, false}, ras,
+                     args.out / "3_plan_ras.png");
+    j["ras"] = {{"status", planning::to_string(rr.status)},
+                {"region_size", ro.region_size},
+                {"density", ro.density},
+                {"length_m", rr.length_cells * built_map.resolution()},
+                {"time_ms", rr.time_ms},
+                {"picture", "3_plan_ras.png"}};
     summary["plan"] = j;
   }
 
@@ -400,7 +420,7 @@ void run(const DemoArgs& a) {
   progress.begin("Voronoi diagram and topological map");
   d.topology_stage();
   progress.end();
-  progress.begin("planning: A*, Dijkstra, topological graph");
+  progress.begin("planning: A*, Dijkstra, topological graph, RAS");
   d.planning_stage();
   progress.end();
   progress.begin("coordinating a team with collision maps");
@@ -441,7 +461,10 @@ void run(const DemoArgs& a) {
             << s["plan"]["astar"]["expanded"] << " expanded), Dijkstra "
             << num(s["plan"]["dijkstra"]["length_m"], 2) << " m ("
             << s["plan"]["dijkstra"]["expanded"] << " expanded), topological graph "
-            << num(s["plan"]["topo"]["length_m"], 2) << " m\n"
+            << num(s["plan"]["topo"]["length_m"], 2) << " m, RAS "
+            << num(s["plan"]["ras"]["length_m"], 2) << " m (regions of "
+            << s["plan"]["ras"]["region_size"] << " cells, density " << s["plan"]["ras"]["density"]
+            << ")\n"
             << "  coordination: " << s["coordination"]["robots"] << " robots, makespan "
             << num(s["coordination"]["makespan_s"]) << " s, valid "
             << (s["coordination"]["valid"].get<bool>() ? "yes" : "no") << "\n"

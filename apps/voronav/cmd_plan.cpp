@@ -98,7 +98,8 @@ void setup(CLI::App& app) {
                   "metres in the world frame for ROS and image maps (see --cells)")
       ->required();
   cmd->add_option("--goal", args->goal, "Goal X,Y, same frame as --start")->required();
-  cmd->add_option("--planner", args->planner, "astar | dijkstra | ras | topo")->capture_default_str();
+  cmd->add_option("--planner", args->planner, "astar | dijkstra | ras | topo")
+      ->capture_default_str();
   cmd->add_option("--connectivity", args->connectivity, "4 or 8 neighbours")
       ->check(CLI::IsMember({4, 8}))
       ->capture_default_str();
