@@ -41,6 +41,8 @@ CellBox known_bounds(const OccupancyGrid& grid, int margin) {
 Figure::Figure(const GridGeometry& geometry, FigureOptions options)
     : geometry_(geometry), options_(std::move(options)) {
   if (geometry_.empty()) throw Error("render::Figure: the grid is empty (0 cells)");
+  grid_width_ = geometry.width;
+  grid_height_ = geometry.height;
   const CellBox& c = options_.crop;
   if (c.x1 > c.x0 || c.y1 > c.y0) {
     if (c.x0 < 0 || c.y0 < 0 || c.x1 > geometry.width || c.y1 > geometry.height || c.x1 <= c.x0 ||
@@ -109,7 +111,16 @@ void Figure::raster(std::function<std::uint32_t(Cell)> colour_of) {
   });
 }
 
+void Figure::check_raster(int width, int height, const char* what) const {
+  if (width != grid_width_ || height != grid_height_)
+    throw Error("render::Figure", 0,
+                std::string(what) + ": raster is " + std::to_string(width) + "x" +
+                    std::to_string(height) + " cells, the figure's grid is " +
+                    std::to_string(grid_width_) + "x" + std::to_string(grid_height_));
+}
+
 void Figure::occupancy(const OccupancyGrid& grid) {
+  check_raster(grid.width(), grid.height(), "occupancy");
   raster([&grid](Cell c) {
     const int v = grid[c];
     if (v < 0 || v > 100) return argb(colors::kUnknown);
@@ -121,11 +132,13 @@ void Figure::occupancy(const OccupancyGrid& grid) {
 }
 
 void Figure::binary(const BinaryGrid& grid, Color on, Color off) {
+  check_raster(grid.width(), grid.height(), "binary");
   const std::uint32_t a = argb(on), b = argb(off);
   raster([&](Cell c) { return grid[c] != 0 ? a : b; });
 }
 
 void Figure::scalar(const GridMap<float>& field, double lo, double hi, double alpha) {
+  check_raster(field.width(), field.height(), "scalar");
   const double span = hi > lo ? hi - lo : 1.0;
   raster([&](Cell c) {
     const float v = field[c];
@@ -135,6 +148,7 @@ void Figure::scalar(const GridMap<float>& field, double lo, double hi, double al
 }
 
 void Figure::labels(const GridMap<std::int32_t>& labels, double alpha) {
+  check_raster(labels.width(), labels.height(), "labels");
   raster([&](Cell c) {
     const std::int32_t l = labels[c];
     return l < 0 ? argb(colors::kTransparent) : argb(palette(l).with_alpha(alpha));

@@ -46,7 +46,7 @@ class Figure {
  public:
   explicit Figure(const GridGeometry& geometry, FigureOptions options = {});
 
-  // Rasters (one pixel block per cell).
+  // Rasters (one pixel block per cell); each must have the size of the figure's grid.
   /// free white, occupied black, unknown light grey, 1..99 grey by probability.
   void occupancy(const OccupancyGrid& grid);
   /// Cells with value != 0 in `on`, cells with 0 in `off` (transparent by default).
@@ -88,10 +88,13 @@ class Figure {
 
  private:
   using Op = std::function<void(_cairo*)>;
+  /// Throws voronav::Error when a raster's size differs from the figure's grid.
+  void check_raster(int width, int height, const char* what) const;
   void raster(std::function<std::uint32_t(Cell)> argb);
 
-  GridGeometry geometry_;  ///< of the drawn part (the crop)
-  Cell offset_{};          ///< grid cell of the crop's cell (0, 0)
+  GridGeometry geometry_;                 ///< of the drawn part (the crop)
+  Cell offset_{};                         ///< grid cell of the crop's cell (0, 0)
+  int grid_width_ = 0, grid_height_ = 0;  ///< of the whole grid (rasters must match)
   FigureOptions options_;
   double ppc_ = 1.0;
   int header_px_ = 0;

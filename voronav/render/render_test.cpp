@@ -133,6 +133,15 @@ TEST(Figure, Errors) {
     EXPECT_NE(std::string(e.what()).find(".png or .svg"), std::string::npos);
   }
   EXPECT_THROW(f.save("/nonexistent-folder/x.png"), Error);
+  // A raster of another size would be read out of bounds: refused with both sizes named.
+  try {
+    f.occupancy(OccupancyGrid(4, 5, kFree));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("4x5"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("5x5"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(f.binary(BinaryGrid(5, 6, 0), colors::kBlack), Error);
 }
 
 TEST(Figure, HugeMapIsScaledDown) {
