@@ -6,9 +6,10 @@ files written, error messages that name what was wrong)."""
 import json
 import math
 import os
-import subprocess
 import sys
 import tempfile
+
+from cli_util import check, runner
 
 BIN, ROOT, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 DATA = os.path.join(ROOT, "data")
@@ -16,17 +17,7 @@ ARENA = os.path.join(DATA, "movingai", "arena.map")
 TB3 = os.path.join(DATA, "ros_maps", "turtlebot3_world", "map.yaml")
 
 
-def run(*args, expect=0):
-    p = subprocess.run([BIN, *args], capture_output=True, text=True, timeout=240)
-    if p.returncode != expect:
-        sys.exit(f"FAIL: voronav {' '.join(args)} exited {p.returncode}, expected {expect}\n"
-                 f"stdout:\n{p.stdout}\nstderr:\n{p.stderr}")
-    return p
-
-
-def check(cond, msg):
-    if not cond:
-        sys.exit("FAIL: " + msg)
+run = runner(BIN, timeout=240)
 
 
 def scen_rows(path):

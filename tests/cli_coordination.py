@@ -4,9 +4,10 @@ Usage: cli_coordination.py VORONAV_BINARY REPO_ROOT CASE."""
 import json
 import math
 import os
-import subprocess
 import sys
 import tempfile
+
+from cli_util import check, runner
 
 BIN, ROOT, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 DATA = os.path.join(ROOT, "data")
@@ -16,17 +17,7 @@ CROSSING = os.path.join(DATA, "coordination", "crossing.yaml")
 ARENA = os.path.join(DATA, "coordination", "arena_four.yaml")
 
 
-def run(*args, expect=0):
-    p = subprocess.run([BIN, *args], capture_output=True, text=True, timeout=120)
-    if p.returncode != expect:
-        sys.exit(f"FAIL: voronav {' '.join(args)} exited {p.returncode}, expected {expect}\n"
-                 f"stdout:\n{p.stdout}\nstderr:\n{p.stderr}")
-    return p
-
-
-def check(cond, msg):
-    if not cond:
-        sys.exit("FAIL: " + msg)
+run = runner(BIN, timeout=120)
 
 
 def check_summary(out, n):

@@ -6,25 +6,16 @@ Each case runs the real binary: dds-selftest launches one `voronav dds-echo` pro
 loopback and checks delivery; the assertions here re-check its JSON report."""
 import json
 import os
-import subprocess
 import sys
 import tempfile
 import time
 
+from cli_util import check, runner
+
 BIN, ROOT, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 
 
-def run(*args, expect=0, timeout=120):
-    p = subprocess.run([BIN, *args], capture_output=True, text=True, timeout=timeout)
-    if p.returncode != expect:
-        sys.exit(f"FAIL: voronav {' '.join(args)} exited {p.returncode}, expected {expect}\n"
-                 f"stdout:\n{p.stdout}\nstderr:\n{p.stderr}")
-    return p
-
-
-def check(cond, msg):
-    if not cond:
-        sys.exit("FAIL: " + msg)
+run = runner(BIN, timeout=120)
 
 
 def selftest(*args, expect=0):

@@ -6,25 +6,16 @@ independent breadth-first search over the region grid written here in Python."""
 import collections
 import json
 import os
-import subprocess
 import sys
 import tempfile
+
+from cli_util import check, runner
 
 BIN, ROOT, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 ARENA = os.path.join(ROOT, "data", "movingai", "arena.map")
 
 
-def run(*args, expect=0):
-    p = subprocess.run([BIN, *args], capture_output=True, text=True, timeout=240)
-    if p.returncode != expect:
-        sys.exit(f"FAIL: voronav {' '.join(args)} exited {p.returncode}, expected {expect}\n"
-                 f"stdout:\n{p.stdout[:2000]}\nstderr:\n{p.stderr}")
-    return p
-
-
-def check(cond, msg):
-    if not cond:
-        sys.exit("FAIL: " + msg)
+run = runner(BIN, timeout=240, stdout_limit=2000)
 
 
 def load_map(path):

@@ -3,26 +3,17 @@
 Usage: cli_topology.py VORONAV_BINARY REPO_ROOT CASE."""
 import json
 import os
-import subprocess
 import sys
 import tempfile
+
+from cli_util import check, runner
 
 BIN, ROOT, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 PLANS = os.path.join(ROOT, "data", "floorplans")
 TB3 = os.path.join(ROOT, "data", "ros_maps", "turtlebot3_world", "map.yaml")
 
 
-def run(*args, expect=0):
-    p = subprocess.run([BIN, *args], capture_output=True, text=True, timeout=240)
-    if p.returncode != expect:
-        sys.exit(f"FAIL: voronav {' '.join(args)} exited {p.returncode}, expected {expect}\n"
-                 f"stdout:\n{p.stdout}\nstderr:\n{p.stderr}")
-    return p
-
-
-def check(cond, msg):
-    if not cond:
-        sys.exit("FAIL: " + msg)
+run = runner(BIN, timeout=240)
 
 
 def topo(name, method):

@@ -7,20 +7,12 @@ import subprocess
 import sys
 import tempfile
 
+from cli_util import check, runner
+
 BIN, ROOT, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 
 
-def run(*args, expect=0):
-    p = subprocess.run([BIN, *args], capture_output=True, text=True, timeout=120)
-    if p.returncode != expect:
-        sys.exit(f"FAIL: voronav {' '.join(args)} exited {p.returncode}, expected {expect}\n"
-                 f"stdout:\n{p.stdout}\nstderr:\n{p.stderr}")
-    return p
-
-
-def check(cond, msg):
-    if not cond:
-        sys.exit("FAIL: " + msg)
+run = runner(BIN, timeout=120)
 
 
 def embedded(page_path):
