@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <map>
 #include <mutex>
 #include <random>
@@ -233,6 +234,8 @@ struct DdsTransport::Impl {
   std::map<Guid, std::uint32_t> owner_id;
   std::map<std::uint32_t, Vec2> positions;
   std::optional<Vec2> own_position;
+  // Stamped poses (oldest first), own included, for range_at_send_time and nearby().
+  std::map<std::uint32_t, std::deque<std::pair<double, Vec2>>> pose_hist;
   std::map<std::uint32_t, std::uint64_t> last_seq;
   std::uint64_t next_seq = 1;
   DdsTransportStats stats;
@@ -249,12 +252,16 @@ struct DdsTransport::Impl {
     dds_lset_subscription_matched(listener, &Impl::on_matched);
     dds_qos_t* pq = Endpoints::payload_qos(options);
     dds_qos_t* sq = Endpoints::pose_qos();
+    dds_qos_t* rq = Endpoints::pose_qos();
+    // The reader keeps a few poses per robot, so none is lost between two drains.
+    dds_qset_history(rq, DDS_HISTORY_KEEP_LAST, std::max(1, options.pose_history));
     payload_writer = dds_create_writer(ep.publisher, ep.payload_topic, pq, nullptr);
     payload_reader = dds_create_reader(ep.subscriber, ep.payload_topic, pq, listener);
     pose_writer = dds_create_writer(ep.publisher, ep.pose_topic, sq, nullptr);
-    pose_reader = dds_create_reader(ep.subscriber, ep.pose_topic, sq, listener);
+    pose_reader = dds_create_reader(ep.subscriber, ep.pose_topic, rq, listener);
     dds_delete_qos(pq);
     dds_delete_qos(sq);
+    dds_delete_qos(rq);
     dds_delete_listener(listener);
     check(payload_writer, "dds_create_writer(payload)");
     check(payload_reader, "dds_create_reader(payload)");
@@ -329,6 +336,23 @@ struct DdsTransport::Impl {
     return true;
   }
 
+  void remember_pose(std::uint32_t id, double t, Vec2 p) {
+    auto& h = pose_hist[id];
+    if (!h.empty() && t < h.back().first) h.clear();  // a restarted clock: start over
+    h.emplace_back(t, p);
+    while (h.size() > static_cast<std::size_t>(std::max(1, options.pose_history)))
+      h.pop_front();
+  }
+
+  /// Latest pose of `id` stamped at or before t (own included); nullopt when none.
+  std::optional<Vec2> pose_at(std::uint32_t id, double t) const {
+    auto it = pose_hist.find(id);
+    if (it == pose_hist.end()) return std::nullopt;
+    for (auto p = it->second.rbegin(); p != it->second.rend(); ++p)
+      if (p->first <= t + 1e-9) return p->second;
+    return std::nullopt;
+  }
+
   void drain_poses() {
     constexpr std::size_t kBatch = 64;
     for (;;) {
@@ -349,6 +373,7 @@ struct DdsTransport::Impl {
         }
         if (!check_identity(pose_reader, si[i], p->id)) continue;
         positions[p->id] = Vec2{p->x, p->y};
+        remember_pose(p->id, p->t, Vec2{p->x, p->y});
         ++stats.poses_received;
       }
       dds_return_loan(pose_reader, buf, n);
@@ -388,12 +413,18 @@ struct DdsTransport::Impl {
       return;
     }
     if (std::isfinite(options.radio_range_m)) {
-      auto it = positions.find(s.sender);
-      if (!own_position || it == positions.end()) {
+      std::optional<Vec2> own = own_position, theirs;
+      if (options.range_at_send_time) {
+        own = pose_at(options.self.value, s.sent_at);
+        theirs = pose_at(s.sender, s.sent_at);
+      } else if (auto it = positions.find(s.sender); it != positions.end()) {
+        theirs = it->second;
+      }
+      if (!own || !theirs) {
         ++stats.dropped_unknown_pose;
         return;
       }
-      if (distance(*own_position, it->second) > options.radio_range_m) {
+      if (distance(*own, *theirs) > options.radio_range_m) {
         ++stats.dropped_range;
         return;
       }
@@ -518,7 +549,62 @@ void DdsTransport::update_position(network::RobotId id, Vec2 position) {
   const dds_return_t rc = dds_write(impl_->pose_writer, &p);
   if (rc != DDS_RETCODE_OK) fail("dds_write(pose)", rc);
   impl_->own_position = position;
+  impl_->remember_pose(id.value, p.t, position);
   ++impl_->stats.poses_sent;
+}
+
+std::vector<network::Neighbour> DdsTransport::nearby(network::RobotId self) {
+  if (self != impl_->options.self)
+    throw Error("self", 0, "this transport is robot " + std::to_string(impl_->options.self.value));
+  std::lock_guard lock(impl_->mutex);
+  impl_->drain_poses();
+  const double now = impl_->options.clock();
+  std::vector<network::Neighbour> out;
+  const auto own = impl_->pose_at(self.value, now);
+  if (!own) return out;
+  for (const auto& [id, hist] : impl_->pose_hist) {
+    if (id == self.value) continue;
+    const auto p = impl_->pose_at(id, now);
+    if (p && distance(*p, *own) <= impl_->options.radio_range_m)
+      out.push_back({network::RobotId{id}, *p});
+  }
+  return out;
+}
+
+bool DdsTransport::wait_for_poses(const std::vector<network::RobotId>& ids, double min_stamp_s,
+                                  double timeout_s) {
+  const double deadline = steady_seconds() + std::max(0.0, timeout_s);
+  for (;;) {
+    {
+      std::lock_guard lock(impl_->mutex);
+      impl_->drain_poses();
+      bool all = true;
+      for (auto id : ids) {
+        if (id == impl_->options.self) continue;
+        auto it = impl_->pose_hist.find(id.value);
+        if (it == impl_->pose_hist.end() || it->second.empty() ||
+            it->second.back().first + 1e-9 < min_stamp_s) {
+          all = false;
+          break;
+        }
+      }
+      if (all) return true;
+    }
+    if (steady_seconds() >= deadline) return false;
+    // Not the waitset: it fires while payloads wait to be taken, and those stay queued here.
+    std::this_thread::sleep_for(std::chrono::microseconds(100));
+  }
+}
+
+std::uint64_t DdsTransport::last_seq_from(network::RobotId id) const {
+  std::lock_guard lock(impl_->mutex);
+  auto it = impl_->last_seq.find(id.value);
+  return it == impl_->last_seq.end() ? 0 : it->second;
+}
+
+std::uint64_t DdsTransport::last_seq_sent() const {
+  std::lock_guard lock(impl_->mutex);
+  return impl_->next_seq - 1;
 }
 
 bool DdsTransport::wait_for_peers(std::size_t count, double timeout_s) {

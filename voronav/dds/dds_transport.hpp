@@ -60,8 +60,15 @@ struct DdsTransportOptions {
   double max_blocking_s = 1.0;
   /// On destruction, wait at most this long for receivers to acknowledge what was sent [s].
   double close_timeout_s = 1.0;
-  /// Clock for Packet::sent_at_s [s]; default: steady clock (CLOCK_MONOTONIC, shared by every
-  /// process of one machine, so latencies between local processes are meaningful).
+  /// Check the radio range with the positions the sender and this robot had when the packet was
+  /// sent (the poses stamped at or before Packet::sent_at_s, from a short history) instead of the
+  /// latest ones. With a lockstep clock (robot processes of `voronav netsim --transport dds`,
+  /// netsim_dds.hpp) this gives exactly the receptions of the simulated radio.
+  bool range_at_send_time = false;
+  /// Poses kept per robot for range_at_send_time and nearby() (>= 1).
+  int pose_history = 16;
+  /// Clock for Packet::sent_at_s and the pose stamps [s]; default: steady clock (CLOCK_MONOTONIC,
+  /// shared by every process of one machine, so latencies between local processes are meaningful).
   std::function<double()> clock{};
 };
 
@@ -111,12 +118,23 @@ class DdsTransport final : public network::Transport {
   /// Publishes this robot's position on the pose topic (only `self`; other ids throw, since a
   /// process must not speak for another robot).
   void update_position(network::RobotId id, Vec2 position) override;
+  /// Robots whose latest pose stamped at or before clock() lies within radio_range_m of our own.
+  [[nodiscard]] std::vector<network::Neighbour> nearby(network::RobotId self) override;
 
   /// Waits until at least `count` other robots are known (pose received and payload writer and
   /// reader matched both ways). Returns false on timeout [s].
   bool wait_for_peers(std::size_t count, double timeout_s);
   /// Waits until a payload or pose sample is available or timeout [s]; true when data is there.
   bool wait_for_data(double timeout_s);
+  /// Waits until a pose stamped at or after `min_stamp_s` has arrived from every robot in `ids`
+  /// (only poses are taken; payloads stay queued). False on timeout [s].
+  bool wait_for_poses(const std::vector<network::RobotId>& ids, double min_stamp_s,
+                      double timeout_s);
+  /// Highest payload sequence number seen from `id` (also of packets not delivered: for another
+  /// robot, out of range, lost); 0 when none. Sequence numbers start at 1 per sender.
+  [[nodiscard]] std::uint64_t last_seq_from(network::RobotId id) const;
+  /// Sequence number of the last payload this transport sent (0 when none).
+  [[nodiscard]] std::uint64_t last_seq_sent() const;
   /// Waits until every matched receiver acknowledged every payload sent; false on timeout [s].
   bool flush(double timeout_s);
 

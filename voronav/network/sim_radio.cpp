@@ -65,6 +65,13 @@ bool SimRadio::in_range(RobotId a, RobotId b) const {
          options_.range_m * options_.range_m;
 }
 
+std::vector<Neighbour> SimRadio::nearby(RobotId self) {
+  std::vector<Neighbour> out;
+  for (RobotId n : neighbours(self))
+    out.push_back({n, positions_[n.value]});
+  return out;
+}
+
 std::vector<RobotId> SimRadio::neighbours(RobotId id) const {
   std::vector<RobotId> out;
   for (std::uint32_t i = 0; i < known_.size(); ++i)
@@ -136,7 +143,9 @@ std::vector<Packet> SimRadio::receive(RobotId self) {
     (p.deliver_at <= now_ + 1e-12 ? due : later).push_back(std::move(p));
   box = std::move(later);
   std::sort(due.begin(), due.end(), [](const Pending& a, const Pending& b) {
-    return a.deliver_at != b.deliver_at ? a.deliver_at < b.deliver_at : a.order < b.order;
+    if (a.deliver_at != b.deliver_at) return a.deliver_at < b.deliver_at;
+    if (a.packet.from != b.packet.from) return a.packet.from < b.packet.from;
+    return a.order < b.order;
   });
   out.reserve(due.size());
   for (auto& p : due)

@@ -2,9 +2,11 @@
 // range). A transmission reaches the robots within `range_m` of the sender at send time; each
 // reception is independently lost with probability `loss`, duplicated with `duplicate`, and
 // delayed by `latency_s` (+ uniform jitter; with `reorder` a reception gets an extra delay so
-// later messages may overtake it). Bytes on the air are the real serialized size, counted once
-// per transmission (a broadcast is one transmission), per message type (peeked from the wire
-// header) and per robot. Deterministic for a given seed.
+// later messages may overtake it). Receptions due at the same instant are handed over in sender
+// order, and in send order per sender (what a receiver of separate processes can reproduce). Bytes
+// on the air are the real serialized size, counted once per transmission (a broadcast is one
+// transmission), per message type (peeked from the wire header) and per robot. Deterministic for a
+// given seed.
 #pragma once
 
 #include <array>
@@ -54,6 +56,7 @@ class SimRadio final : public Transport {
   void broadcast(RobotId from, std::span<const std::uint8_t> bytes) override;
   [[nodiscard]] std::vector<Packet> receive(RobotId self) override;
   void update_position(RobotId id, Vec2 position) override;
+  [[nodiscard]] std::vector<Neighbour> nearby(RobotId self) override;
 
   /// Advances the radio clock [s]; receive() returns packets whose delivery time has come.
   void set_time(double now_s);

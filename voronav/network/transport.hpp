@@ -31,6 +31,13 @@ struct Packet {
   double sent_at_s = 0.0;  ///< sender's clock when sent [s]
 };
 
+/// A robot within radio range and where it is.
+struct Neighbour {
+  RobotId id;
+  Vec2 position;
+  friend bool operator==(const Neighbour&, const Neighbour&) = default;
+};
+
 class Transport {
  public:
   virtual ~Transport() = default;
@@ -42,6 +49,9 @@ class Transport {
   [[nodiscard]] virtual std::vector<Packet> receive(RobotId self) = 0;
   /// Where robot `id` is now [m, world frame]; radio range is checked against these positions.
   virtual void update_position(RobotId id, Vec2 position) = 0;
+  /// The robots within radio range of `self` now and their positions (ascending ids): what a
+  /// robot knows of its radio neighbours (seed 000 uses it to decide who is closest to the goal).
+  [[nodiscard]] virtual std::vector<Neighbour> nearby(RobotId self) = 0;
 };
 
 }  // namespace voronav::network

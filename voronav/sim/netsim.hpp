@@ -142,7 +142,20 @@ struct NetSimResult {
   Recording recording;  ///< filled when options.record
 };
 
-/// Runs one scenario with one method. Deterministic for given scenario and options.
+/// Runs one scenario with one method, every robot a RobotAgent (robot_agent.hpp) over the
+/// simulated radio, in one process. Deterministic for given scenario and options.
 [[nodiscard]] NetSimResult run_netsim(const NetSimScenario& scenario, const NetSimOptions& options);
+
+/// Where an obstacle change happened (cell centres, world frame [m]).
+struct ChangeBox {
+  Vec2 lo, hi;
+};
+/// Applies `change` to the ground truth (1 = blocked) and returns the box it touched.
+ChangeBox apply_change(BinaryGrid& truth, const ObstacleChange& change);
+/// Indices of the changes from `applied` on that are due at now_s, given when the source first
+/// had a route (-1: not yet, nothing is due). Changes are taken in file order.
+[[nodiscard]] std::vector<std::size_t> changes_due(const NetSimScenario& scenario,
+                                                   double first_route_s, double now_s,
+                                                   std::size_t applied);
 
 }  // namespace voronav::sim

@@ -1,0 +1,236 @@
+// RobotAgent: one robot of the networked-robot experiments of seed 000, on its own: its pose, its
+// local map (exact 3 m sensing), its Voronoi points and its whole share of the protocol, both the
+// decentralized one (Search / Path / Repair, Tables 1–5) and the centralized baseline (Request /
+// Ack / Notify), talking to the other robots only through a network::Transport. The in-process
+// simulator (run_netsim) steps many agents over the simulated radio; a robot process
+// (voronav robot, voronav/dds) steps one agent over Cyclone DDS. Both follow the same step, so the
+// same scenario gives the same route and the same messages:
+//   move(t_k)        drive along the waypoints, sense; sends and the new position are held back
+//   flush()          publish the position, then send what move() held back (sent at t_k)
+//   communicate(t_k) take the packets sent up to t_{k-1}, handle them, run the timers (retries,
+//                    Path selection, bridging, search timeout)
+//   world_changed()  the ground truth changed (an obstacle change of Table 7): sense it if near
+// Positions the protocol reads (who is a neighbour, and where) are those after every robot's
+// move of the step; during move() they are those of the step before.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <unordered_set>
+#include <vector>
+
+#include "voronav/network/messages.hpp"
+#include "voronav/network/sim_radio.hpp"
+#include "voronav/network/transport.hpp"
+#include "voronav/network/voronoi_points.hpp"
+#include "voronav/sim/netsim.hpp"
+#include "voronav/sim/world.hpp"
+
+namespace voronav::sim {
+
+/// What every agent shares: the scenario (source, destination, world geometry), the options and
+/// the ground truth it senses (1 = blocked; whoever owns it applies the obstacle changes).
+struct AgentContext {
+  const NetSimScenario* scenario = nullptr;
+  const NetSimOptions* options = nullptr;
+  const BinaryGrid* truth = nullptr;
+  /// When set, every transmission is appended here (recordings).
+  std::vector<RecordedMessage>* message_log = nullptr;
+};
+
+/// One robot's share of the run metrics (NetSimMetrics is the sum over robots, see
+/// aggregate_metrics()).
+struct AgentReport {
+  RobotMetrics metrics;  ///< work, CPU, travel, bytes and messages sent
+  std::array<network::TrafficCounter, network::kMessageTypeCount> sent_by_type{};
+  int search_attempts = 0;
+  int repairs = 0;
+  int replans = 0;
+  std::uint64_t corrupt_packets = 0;
+  // Only the source fills these.
+  bool arrived = false;
+  double route_time_s = -1.0;
+  double arrival_time_s = -1.0;
+  double route_length_m = 0.0;
+};
+
+/// Sums the robots' reports (eq. 3–9) into the metrics of a run; `source` is the source's index.
+[[nodiscard]] NetSimMetrics aggregate_metrics(const std::vector<AgentReport>& robots,
+                                              std::size_t source, Method method);
+
+class RobotAgent {
+ public:
+  /// `context` and `transport` must outlive the agent.
+  RobotAgent(const AgentContext& context, network::RobotId id, Vec2 position,
+             network::Transport& transport);
+  RobotAgent(const RobotAgent&) = delete;
+  RobotAgent& operator=(const RobotAgent&) = delete;
+
+  /// t = 0, first part: publish the position and sense.
+  void begin();
+  /// t = 0, second part (every robot's position known): the source starts its method.
+  void start();
+  void move(double now_s);
+  void flush();
+  void communicate(double now_s);
+  /// The ground truth changed inside [lo, hi] (world frame [m]) at now_s.
+  void world_changed(double now_s, Vec2 lo, Vec2 hi);
+
+  [[nodiscard]] network::RobotId id() const { return r_.id; }
+  [[nodiscard]] Vec2 position() const { return r_.pos; }
+  [[nodiscard]] bool is_source() const;
+  [[nodiscard]] bool arrived() const { return report_.arrived; }
+  /// When the source first had a route (-1 before; only meaningful for the source).
+  [[nodiscard]] double first_route_s() const { return report_.route_time_s; }
+  [[nodiscard]] AgentReport report() const;
+  [[nodiscard]] const LocalMap& local_map() const { return r_.map; }
+  [[nodiscard]] std::vector<network::VoronoiPoint> open_points();
+  /// The source's current route [m] (decentralized: route points; centralized: waypoints).
+  [[nodiscard]] std::vector<Vec2> route() const;
+
+ private:
+  struct SenderInfo {
+    network::RobotId id;
+    std::vector<network::RobotId> relays;
+    std::size_t offset = 0;  // first of its points in s_in.open_points
+    std::size_t count = 0;
+  };
+  enum class Walk { kIdle, kBridge, kDestination };
+  struct State {
+    network::RobotId id;
+    Vec2 pos;
+    LocalMap map;
+    std::vector<Vec2> waypoints;
+    std::size_t wp = 0;
+    bool points_dirty = true;
+    network::VoronoiPoints pts;
+    std::unordered_set<std::uint64_t> seen;
+    std::uint32_t next_msg = 1;
+    // Decentralized search state (one search at a time: the latest Num).
+    std::uint32_t s_num = 0xFFFFFFFFu;
+    bool s_done = false;
+    network::SearchMessage s_in;  // what the senders told us: all their points, concatenated
+    std::vector<SenderInfo> s_senders;
+    std::uint8_t s_hops = 0;
+    int reforwards = 0;
+    std::vector<network::VoronoiPoint> s_comb;  // sender points + own points (+ destination)
+    network::PointSearch s_search;
+    std::size_t s_na = 0;             // number of sender points in s_comb
+    std::vector<std::size_t> s_sent;  // sent point index -> s_comb index
+    Walk walk = Walk::kIdle;
+    double walk_since_check = 0.0;
+    double bridge_at = -1.0;  // when to start bridging if no continuable Search came
+    std::vector<network::PathMessage> got_paths;
+    double path_deadline = -1.0;
+    bool path_forwarded = false;
+    std::optional<network::PathMessage> saved;
+    std::unordered_set<std::uint32_t> repairs_seen;
+    std::uint32_t repair_counter = 0;
+    // Centralized.
+    network::RobotId parent = network::kBroadcast;
+    std::uint32_t req_num = 0xFFFFFFFFu;
+  };
+  struct Outgoing {
+    network::RobotId to;
+    std::vector<std::uint8_t> bytes;
+    std::uint64_t key;
+    int tries;
+    double next_at;
+  };
+  struct Held {
+    network::RobotId to;  // kBroadcast for a broadcast
+    std::vector<std::uint8_t> bytes;
+  };
+
+  template <typename F>
+  auto timed(F&& f);
+  void do_sense();
+  const network::VoronoiPoints& points();
+  [[nodiscard]] network::VoronoiPointsOptions points_opts() const;
+  [[nodiscard]] const NetSimOptions& opt() const { return *ctx_.options; }
+  [[nodiscard]] const NetSimScenario& scen() const { return *ctx_.scenario; }
+  [[nodiscard]] network::RobotId source_id() const;
+
+  // messaging
+  void transmit(network::RobotId to, std::vector<std::uint8_t> bytes);
+  void broadcast(network::Payload p, std::uint8_t hops);
+  void send_reliable(network::RobotId to, network::Payload p);
+  void link_ack(const network::Header& h);
+  void handle_packet(const network::Packet& p);
+  void timers();
+
+  void on_map_changed();
+  // motion
+  bool segment_blocked(Vec2 a, Vec2 b) const;
+  bool segment_known_free(Vec2 a, Vec2 b) const;
+  bool plan_walk(Vec2 target);
+  bool walk_blocked() const;
+  void walk_progress(bool arrived);
+  // decentralized: Search (Tables 1-2)
+  void start_search();
+  bool try_continue();
+  [[nodiscard]] bool dest_reached() const;
+  void on(const network::Header& h, const network::SearchMessage& m);
+  void process_search(network::RobotId sender, const network::SearchMessage& m, std::uint8_t hops);
+  void start_bridge();
+  void after_continue(std::uint8_t hops);
+  void forward_search(std::uint8_t hops);
+  [[nodiscard]] std::size_t sender_of(std::size_t i) const;
+  struct Piece {
+    std::size_t sender = 0;  // index into s_senders
+    std::uint32_t exit = 0;  // index into that sender's points
+    std::vector<network::VoronoiPoint> points;
+  };
+  [[nodiscard]] Piece own_piece(std::size_t last) const;
+  void answer_path();
+  // decentralized: Path (Table 3)
+  void on(const network::Header& h, const network::PathMessage& m);
+  void select_path();
+  void finish_route(const network::PathMessage& p);
+  [[nodiscard]] std::size_t next_route_index() const;
+  void set_source_waypoints(std::size_t from);
+  // decentralized: Repair (Tables 4-5)
+  std::optional<std::pair<std::uint32_t, std::uint32_t>> find_break(
+      const std::vector<network::VoronoiPoint>& path, std::size_t from);
+  std::vector<network::VoronoiPoint> detour(const std::vector<network::VoronoiPoint>& path,
+                                            std::uint32_t from, std::uint32_t to);
+  void check_relay_route();
+  void on(const network::Header& h, const network::RepairMessage& m);
+  void on_repair_path(network::PathMessage m);
+  void splice_route(const std::vector<network::VoronoiPoint>& whole);
+  void check_source_route();
+  [[nodiscard]] std::uint32_t next_repair_num();
+  // centralized baseline
+  void start_request();
+  void on(const network::Header& h, const network::RequestMessage& m);
+  void on(const network::Header& h, const network::AckMessage& m);
+  void on(const network::Header& h, const network::NotifyMessage& m);
+  void on(const network::Header& h, const network::LinkAckMessage& m);
+  void plan_central();
+  void check_central_path();
+
+  AgentContext ctx_;
+  network::Transport& transport_;
+  State r_;
+  AgentReport report_;
+  std::vector<Outgoing> outbox_;
+  bool holding_ = false;  // inside move(): sends and the position wait for flush()
+  std::vector<Held> held_;
+  bool position_held_ = false;
+  double now_ = 0.0;
+  bool last_sense_changed_ = false;
+  // Source only.
+  std::uint32_t search_num_ = 0;
+  double search_started_ = 0.0;
+  std::vector<network::VoronoiPoint> route_;
+  std::size_t route_base_ = 0;
+  std::vector<Vec2> trail_;     // source positions since its latest Search
+  std::size_t back_steps_ = 0;  // waypoints of the way back along the trail
+  double blocked_since_ = -1.0;
+  std::uint32_t repair_seq_ = 0;
+  bool collecting_ = false;
+  double last_ack_ = 0.0;
+};
+
+}  // namespace voronav::sim
