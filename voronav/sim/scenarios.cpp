@@ -36,16 +36,31 @@ planning::PlanResult truth_plan(const BinaryGrid& pg, Cell a, Cell b) {
 
 }  // namespace
 
-NetSimScenario place_robots(const OfficeWorld& world, const PlacementOptions& o) {
+namespace {
+
+/// A placement and what the obstacle changes of the office worlds need to be built on it.
+struct Placement {
+  NetSimScenario scenario;
+  BinaryGrid blocked;  ///< ground truth, 1 = blocked
+  BinaryGrid pg;       ///< planning grid (blocked inflated by the robot radius + 0.1 m)
+  Cell source;
+  Cell destination;
+};
+
+Placement place(const OccupancyGrid& world, const PlacementOptions& o,
+                std::optional<Vec2> destination) {
   if (o.robots < 1 || o.robots > 100000)
     throw Error("placement.robots", 0, "expected 1..100000 robots");
   if (o.changes < 0 || o.changes > 16)
     throw Error("placement.changes", 0, "expected 0..16 changes");
-  NetSimScenario sc;
-  sc.world = world.grid;
-  const auto& g = world.grid.geometry();
-  const BinaryGrid blocked = binarize(world.grid);
-  const BinaryGrid pg = planning::make_planning_grid(blocked, o.robot_radius_m + 0.1);
+  Placement out;
+  NetSimScenario& sc = out.scenario;
+  sc.world = world;
+  const auto& g = world.geometry();
+  out.blocked = binarize(world);
+  const BinaryGrid& blocked = out.blocked;
+  out.pg = planning::make_planning_grid(blocked, o.robot_radius_m + 0.1);
+  const BinaryGrid& pg = out.pg;
   std::mt19937_64 rng(o.seed);
   std::vector<Cell> free_cells;
   for (int y = 0; y < g.height; ++y)
@@ -59,29 +74,66 @@ NetSimScenario place_robots(const OfficeWorld& world, const PlacementOptions& o)
     std::uniform_int_distribution<std::size_t> d(0, v.size() - 1);
     return v[d(rng)];
   };
-  // Source at random; destination: the farthest reachable of 48 random candidates.
   Cell s = pick(free_cells);
   Cell dest = s;
-  double best = -1.0;
-  const double min_d = 0.3 * std::min(g.width, g.height);
-  for (int k = 0; k < 400 && (k < 48 || best < min_d); ++k) {
-    if (k % 48 == 47 && best < min_d) s = pick(free_cells);  // enclosed source: pick another
-    const Cell c = pick(free_cells);
-    const double d = std::hypot(c.x - s.x, c.y - s.y);
-    if (d > best && truth_plan(pg, s, c).ok()) {
-      best = d;
-      dest = c;
+  if (destination) {
+    // Given destination: draw the source until it can reach it.
+    const auto c = g.world_to_cell(*destination);
+    if (!c || !g.contains(*c) || pg[*c])
+      throw Error("placement", 0,
+                  "the destination has less than robot_radius_m + 0.1 m of clearance");
+    dest = *c;
+    bool ok = truth_plan(pg, s, dest).ok();
+    for (int k = 0; k < 200 && !ok; ++k) {
+      s = pick(free_cells);
+      ok = truth_plan(pg, s, dest).ok();
+    }
+    if (!ok) throw Error("placement", 0, "no free place found that reaches the destination");
+  } else {
+    // Source at random; destination: the farthest reachable of 48 random candidates.
+    double best = -1.0;
+    const double min_d = 0.3 * std::min(g.width, g.height);
+    for (int k = 0; k < 400 && (k < 48 || best < min_d); ++k) {
+      if (k % 48 == 47 && best < min_d) s = pick(free_cells);  // enclosed source: pick another
+      const Cell c = pick(free_cells);
+      const double d = std::hypot(c.x - s.x, c.y - s.y);
+      if (d > best && truth_plan(pg, s, c).ok()) {
+        best = d;
+        dest = c;
+      }
     }
   }
   sc.robots.push_back(g.cell_center(s));
   for (int i = 1; i < o.robots; ++i)
     sc.robots.push_back(g.cell_center(pick(i % 2 == 1 ? vor : free_cells)));
   sc.source = 0;
-  sc.destination = g.cell_center(dest);
+  sc.destination = destination ? *destination : g.cell_center(dest);
+  out.source = s;
+  out.destination = dest;
+  return out;
+}
+
+}  // namespace
+
+NetSimScenario place_robots(const OccupancyGrid& world, const PlacementOptions& o,
+                            std::optional<Vec2> destination) {
+  if (o.changes != 0)
+    throw Error("placement.changes", 0, "obstacle changes need an office world (doors)");
+  OccupancyGrid truth = world;
+  for (auto& v : truth.data())
+    v = v == kFree ? kFree : kOccupied;
+  return place(truth, o, destination).scenario;
+}
+
+NetSimScenario place_robots(const OfficeWorld& world, const PlacementOptions& o) {
+  Placement p = place(world.grid, o, std::nullopt);
+  NetSimScenario& sc = p.scenario;
+  const auto& g = world.grid.geometry();
+  const Cell s = p.source, dest = p.destination;
   // Obstacle changes: close doors on the true shortest route, ahead of the source.
   if (o.changes > 0) {
-    auto plan = truth_plan(pg, s, dest);
-    BinaryGrid changed = blocked;
+    auto plan = truth_plan(p.pg, s, dest);
+    BinaryGrid changed = p.blocked;
     int made = 0;
     for (std::size_t i = 0; i < plan.path.size() && made < o.changes; ++i) {
       const Vec2 w = g.cell_center(plan.path[i]);
@@ -104,7 +156,7 @@ NetSimScenario place_robots(const OfficeWorld& world, const PlacementOptions& o)
       }
     }
   }
-  return sc;
+  return std::move(p.scenario);
 }
 
 NetSimScenario make_paper_run(int id, int run, std::uint64_t seed) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "voronav/sim/netsim.hpp"
@@ -34,6 +35,17 @@ struct PlacementOptions {
 /// Places robots, source, destination and changes in an office world.
 [[nodiscard]] NetSimScenario place_robots(const OfficeWorld& world,
                                           const PlacementOptions& options);
+
+/// Places robots on any ground-truth grid (kFree / kOccupied; anything else counts as blocked):
+/// robot 0 (the source) at a random free place, then alternately one on the Voronoi diagram and
+/// one at a random free place; every place keeps robot_radius_m + 0.1 m of clearance. Without
+/// `destination`, the destination is the farthest reachable of random free candidates (as for
+/// the office worlds); with one, the source is drawn until it can reach it. `options.changes`
+/// must be 0 here (obstacle changes need doors: use the OfficeWorld overload). Throws
+/// voronav::Error when there is no free space or no source reaches the destination.
+[[nodiscard]] NetSimScenario place_robots(const OccupancyGrid& world,
+                                          const PlacementOptions& options,
+                                          std::optional<Vec2> destination = std::nullopt);
 
 /// Run `run` (1..16) of Table 7 for paper scenario `id`; `seed` varies the worlds.
 [[nodiscard]] NetSimScenario make_paper_run(int id, int run, std::uint64_t seed = 1);
