@@ -1,10 +1,13 @@
 // `voronav netsim`: the networked-robot comparison of seed 000 (Tables 6–7): runs the
 // decentralized (Voronoi points, Search/Path/Repair) and/or centralized (Request/Ack + A*) method
-// on a paper scenario (1..4, 16 runs each) and prints the mean metrics, as JSON with --json.
+// on a paper scenario (1..4, 16 runs each) or a scenario file (YAML, one run) and prints the mean
+// metrics, as JSON with --json; --write-scenario saves a paper run as a scenario file.
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -13,6 +16,7 @@
 #include "voronav/core/error.hpp"
 #include "voronav/render/plot.hpp"
 #include "voronav/report/replay_html.hpp"
+#include "voronav/sim/scenario_file.hpp"
 #include "voronav/sim/scenarios.hpp"
 
 namespace voronav::cli {
@@ -22,15 +26,29 @@ struct NetsimArgs {
   std::string scenario = "1";
   std::string method = "both";
   int runs = 16;
+  int run = 1;  ///< the paper run --write-scenario writes
   std::uint64_t seed = 1;
   double loss = 0.0;
   std::string out;
   std::string plots;
+  std::string write_scenario;
   bool json = false;
+  // Whether the option was given on the command line (it then overrides a scenario file).
+  bool method_given = false, seed_given = false, loss_given = false, runs_given = false;
+};
+
+/// What to run: `runs` scenarios (paper runs or the one of a file), each with `methods`.
+struct Plan {
+  std::string label;  ///< "scenario1".."scenario4" or the file's stem (output file names)
+  std::string title;  ///< "Scenario 1".."Scenario 4" or the file's stem (plot titles)
+  int runs = 1;
+  std::function<sim::NetSimScenario(int run)> scenario;
+  sim::NetSimOptions options;  ///< for every run; method set per method
+  std::vector<sim::Method> methods;
 };
 
 /// Figures 22-37 style: one value per run of Table 7, both methods side by side.
-void save_plots(const std::string& dir, const std::string& scenario,
+void save_plots(const std::string& dir, const std::string& label, const std::string& title,
                 const std::map<std::string, std::vector<sim::NetSimMetrics>>& runs) {
   std::filesystem::create_directories(dir);
   struct Fig {
@@ -51,7 +69,7 @@ void save_plots(const std::string& dir, const std::string& scenario,
   for (const auto& f : figs) {
     render::Plot plot({.width_px = 640,
                        .height_px = 360,
-                       .title = "Scenario " + scenario + ": " + f.title,
+                       .title = title + ": " + f.title,
                        .x_label = "run (Table 7)",
                        .y_label = f.unit});
     std::vector<std::string> cats;
@@ -68,7 +86,7 @@ void save_plots(const std::string& dir, const std::string& scenario,
         y.push_back(f.get(m));
       plot.bars(name, y, c++ == 0 ? render::colors::kBlue : render::colors::kOrange);
     }
-    plot.save(std::filesystem::path(dir) / ("scenario" + scenario + "_" + f.file + ".png"));
+    plot.save(std::filesystem::path(dir) / (label + "_" + f.file + ".png"));
   }
 }
 
@@ -88,37 +106,81 @@ nlohmann::json summary_json(const sim::Summary& s) {
           {"gamma_bytes", s.gamma_bytes}};
 }
 
-void run(const NetsimArgs& a) {
-  int id = 0;
-  try {
-    std::size_t used = 0;
-    id = std::stoi(a.scenario, &used);
-    if (used != a.scenario.size()) id = 0;
-  } catch (const std::exception&) {
-    id = 0;
+std::vector<sim::Method> methods_of(const std::string& method) {
+  if (method == "both") return {sim::Method::kCentralized, sim::Method::kDecentralized};
+  return {sim::parse_method(method)};
+}
+
+/// The paper scenario id, or 0 when `--scenario` is not 1..4.
+int paper_id(const std::string& s) {
+  return s.size() == 1 && s[0] >= '1' && s[0] <= '4' ? s[0] - '0' : 0;
+}
+
+Plan make_plan(const NetsimArgs& a) {
+  Plan p;
+  if (const int id = paper_id(a.scenario)) {
+    if (a.runs < 1 || a.runs > 16) throw Error("--runs", 0, "expected 1..16");
+    p.label = "scenario" + a.scenario;
+    p.title = "Scenario " + a.scenario;
+    p.runs = a.runs;
+    p.scenario = [id, seed = a.seed](int run) { return sim::make_paper_run(id, run, seed); };
+    p.options.seed = a.seed;
+    p.options.radio.loss = a.loss;
+    p.methods = methods_of(a.method);
+    return p;
   }
-  if (id < 1 || id > 4)
-    throw Error(
-        "--scenario", 0,
-        "expected 1, 2, 3 or 4, got '" + a.scenario + "' (scenario files are not supported yet)");
-  if (a.runs < 1 || a.runs > 16) throw Error("--runs", 0, "expected 1..16");
-  std::vector<sim::Method> methods;
-  if (a.method == "both") {
-    methods = {sim::Method::kCentralized, sim::Method::kDecentralized};
+  if (!std::filesystem::is_regular_file(a.scenario))
+    throw Error(a.scenario, 0,
+                "scenario file not found (--scenario expects 1, 2, 3, 4 or a scenario YAML file)");
+  auto file = std::make_shared<sim::NetSimScenarioFile>(sim::load_netsim_scenario(a.scenario));
+  if (a.runs_given) std::cerr << "note: --runs is ignored for a scenario file (one run)\n";
+  p.label = p.title = std::filesystem::path(a.scenario).stem().string();
+  p.runs = 1;
+  p.scenario = [file](int) { return file->scenario; };
+  p.options = file->options;
+  if (a.seed_given) p.options.seed = a.seed;
+  if (a.loss_given) p.options.radio.loss = a.loss;
+  // The file's method unless --method is given; a file without one runs both.
+  p.methods = a.method_given || !file->has_method ? methods_of(a.method)
+                                                  : std::vector<sim::Method>{file->options.method};
+  return p;
+}
+
+void write_scenario(const NetsimArgs& a) {
+  sim::NetSimOptions o;
+  sim::NetSimScenario sc;
+  if (const int id = paper_id(a.scenario)) {
+    if (a.run < 1 || a.run > 16) throw Error("--run", 0, "expected 1..16");
+    sc = sim::make_paper_run(id, a.run, a.seed);
+    o.seed = a.seed;
+    o.radio.loss = a.loss;
+    if (a.method != "both") o.method = sim::parse_method(a.method);
   } else {
-    methods = {sim::parse_method(a.method)};
+    const Plan p = make_plan(a);
+    sc = p.scenario(1);
+    o = p.options;
+    if (p.methods.size() == 1) o.method = p.methods.front();
   }
+  sim::save_netsim_scenario(a.write_scenario, sc, o);
+  std::cout << "wrote " << a.write_scenario << "\n";
+}
+
+void run(const NetsimArgs& a) {
+  if (!a.write_scenario.empty()) {
+    write_scenario(a);
+    return;
+  }
+  const Plan plan = make_plan(a);
+  const auto& methods = plan.methods;
   nlohmann::json out = nlohmann::json::object();
   nlohmann::json per_run = nlohmann::json::array();
   std::map<std::string, std::vector<sim::NetSimMetrics>> by_method;
   for (auto m : methods) {
     std::vector<sim::NetSimMetrics> all;
-    for (int run = 1; run <= a.runs; ++run) {
-      const auto sc = sim::make_paper_run(id, run, a.seed);
-      sim::NetSimOptions o;
+    for (int run = 1; run <= plan.runs; ++run) {
+      const auto sc = plan.scenario(run);
+      sim::NetSimOptions o = plan.options;
       o.method = m;
-      o.seed = a.seed;
-      o.radio.loss = a.loss;
       all.push_back(sim::run_netsim(sc, o).metrics);
       const auto& r = all.back();
       per_run.push_back({{"method", std::string(sim::to_string(m))},
@@ -138,21 +200,19 @@ void run(const NetsimArgs& a) {
   }
   if (!a.out.empty()) {
     std::filesystem::create_directories(a.out);
-    std::ofstream f(std::filesystem::path(a.out) / ("netsim_scenario" + a.scenario + ".json"));
+    std::ofstream f(std::filesystem::path(a.out) / ("netsim_" + plan.label + ".json"));
     if (!f) throw Error(a.out, 0, "cannot write the results");
     f << nlohmann::json{{"summary", out}, {"runs", per_run}}.dump(2) << "\n";
     // The replay page: run 2 (the first with an obstacle change, Table 7) of the last method,
     // run again with recording on.
-    const auto sc = sim::make_paper_run(id, std::min(a.runs, 2), a.seed);
-    sim::NetSimOptions o;
+    const auto sc = plan.scenario(std::min(plan.runs, 2));
+    sim::NetSimOptions o = plan.options;
     o.method = methods.back();
-    o.seed = a.seed;
-    o.radio.loss = a.loss;
     o.record = true;
     report::write_replay_html(netsim_recording(sc, sim::run_netsim(sc, o), o.radio.range_m),
                               (std::filesystem::path(a.out) / "index.html").string());
   }
-  if (!a.plots.empty()) save_plots(a.plots, a.scenario, by_method);
+  if (!a.plots.empty()) save_plots(a.plots, plan.label, plan.title, by_method);
   if (a.json) {
     std::cout << out.dump(2) << "\n";
     return;
@@ -172,15 +232,27 @@ void setup(CLI::App& app) {
   auto args = std::make_shared<NetsimArgs>();
   auto* c =
       app.add_subcommand("netsim", "Networked robots (seed 000): decentralized vs centralized");
-  c->add_option("--scenario", args->scenario, "Table 6 scenario 1|2|3|4");
-  c->add_option("--method", args->method, "centralized|decentralized|both");
-  c->add_option("--runs", args->runs, "runs of Table 7 (1..16)");
-  c->add_option("--seed", args->seed, "world/placement seed");
-  c->add_option("--loss", args->loss, "radio message loss probability");
+  c->add_option("--scenario", args->scenario,
+                "Table 6 scenario 1|2|3|4, or a scenario file (YAML, docs/formats.md; one run)");
+  auto* method = c->add_option("--method", args->method,
+                               "centralized|decentralized|both (default: both, or the file's)");
+  auto* runs = c->add_option("--runs", args->runs, "runs of Table 7 (1..16)");
+  c->add_option("--run", args->run, "the run of Table 7 (1..16) --write-scenario writes");
+  auto* seed = c->add_option("--seed", args->seed, "world/placement seed (a file: options.seed)");
+  auto* loss = c->add_option("--loss", args->loss, "radio message loss probability");
+  c->add_option("--write-scenario", args->write_scenario,
+                "write --scenario 1..4 --run K (or the given file) as a scenario file naming "
+                "--method (decentralized for both) and exit");
   c->add_option("--out", args->out, "directory for per-run JSON");
   c->add_option("--plots", args->plots, "directory for per-run bar charts (PNG)");
   c->add_flag("--json", args->json, "machine-readable output");
-  c->callback([args] { run(*args); });
+  c->callback([args, method, runs, seed, loss] {
+    args->method_given = method->count() > 0;
+    args->runs_given = runs->count() > 0;
+    args->seed_given = seed->count() > 0;
+    args->loss_given = loss->count() > 0;
+    run(*args);
+  });
 }
 
 const Command reg{{"netsim", setup, 60}};

@@ -292,6 +292,7 @@ NetSimScenarioFile load_netsim_scenario(const std::string& path) {
   } catch (const YAML::ParserException& e) {
     throw Error(path, e.mark.line + 1, "malformed YAML: " + e.msg);
   }
+  if (root.IsNull()) throw Error(path, 1, "the scenario file is empty (expected 'world', ...)");
   if (!root.IsMap()) rd.fail(root, "expected a mapping with 'world', 'robots', 'destination'");
   rd.keys(root, "scenario",
           {"world", "robots", "placement", "source", "destination", "changes", "options"});
