@@ -2,6 +2,8 @@
 // decentralized (Voronoi points, Search/Path/Repair) and/or centralized (Request/Ack + A*) method
 // on a paper scenario (1..4, 16 runs each) or a scenario file (YAML, one run) and prints the mean
 // metrics, as JSON with --json; --write-scenario saves a paper run as a scenario file.
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -14,6 +16,7 @@
 #include "command.hpp"
 #include "recordings.hpp"
 #include "voronav/core/error.hpp"
+#include "voronav/dds/netsim_dds.hpp"
 #include "voronav/render/plot.hpp"
 #include "voronav/report/replay_html.hpp"
 #include "voronav/sim/scenario_file.hpp"
@@ -32,6 +35,11 @@ struct NetsimArgs {
   std::string out;
   std::string plots;
   std::string write_scenario;
+  std::string transport = "sim";
+  long kill_robot = -1;
+  std::uint32_t kill_at_step = 0;
+  long world_restart_at_step = -1;
+  double dds_timeout_s = 900.0;
   bool json = false;
   // Whether the option was given on the command line (it then overrides a scenario file).
   bool method_given = false, seed_given = false, loss_given = false, runs_given = false;
@@ -165,13 +173,53 @@ void write_scenario(const NetsimArgs& a) {
   std::cout << "wrote " << a.write_scenario << "\n";
 }
 
+/// One run with every robot its own process over Cyclone DDS (voronav/dds/netsim_dds.hpp).
+dds::DdsRunResult run_dds(const NetsimArgs& a, const sim::NetSimScenario& sc,
+                          const sim::NetSimOptions& o, int run) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::temp_directory_path() / ("voronav-netsim-dds-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  struct Cleanup {
+    fs::path d;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(d, ec);
+    }
+  } cleanup{dir};
+  const auto file = (dir / ("run" + std::to_string(run) + ".yaml")).string();
+  sim::save_netsim_scenario(file, sc, o);
+  dds::DdsRunOptions d;
+  d.scenario_path = file;
+  d.loss = o.radio.loss;
+  d.work_dir = dir.string();
+  d.timeout_s = a.dds_timeout_s;
+  if (a.kill_robot >= 0) {
+    d.kill_robot = static_cast<std::uint32_t>(a.kill_robot);
+    d.kill_at_step = a.kill_at_step;
+  }
+  if (a.world_restart_at_step >= 0)
+    d.world_restart_at_step = static_cast<std::uint32_t>(a.world_restart_at_step);
+  if (!a.json)
+    std::cerr << "netsim: run " << run << " (" << sim::to_string(o.method)
+              << "): " << sc.robots.size() << " robot processes + 1 world process over DDS\n";
+  auto r = dds::run_netsim_dds(d);
+  if (!r.ok) throw Error("--transport dds", 0, "the multi-process run failed: " + r.error);
+  return r;
+}
+
 void run(const NetsimArgs& a) {
   if (!a.write_scenario.empty()) {
     write_scenario(a);
     return;
   }
+  if (a.transport != "sim" && a.transport != "dds")
+    throw Error("--transport", 0, "expected 'sim' or 'dds', got '" + a.transport + "'");
+  if (a.transport != "dds" && (a.kill_robot >= 0 || a.world_restart_at_step >= 0))
+    throw Error("--kill-robot", 0, "fault injection needs --transport dds");
   const Plan plan = make_plan(a);
   const auto& methods = plan.methods;
+  std::map<std::string, double> wall;
   nlohmann::json out = nlohmann::json::object();
   nlohmann::json per_run = nlohmann::json::array();
   std::map<std::string, std::vector<sim::NetSimMetrics>> by_method;
@@ -181,7 +229,19 @@ void run(const NetsimArgs& a) {
       const auto sc = plan.scenario(run);
       sim::NetSimOptions o = plan.options;
       o.method = m;
-      all.push_back(sim::run_netsim(sc, o).metrics);
+      nlohmann::json extra = nlohmann::json::object();
+      if (a.transport == "dds") {
+        const auto r = run_dds(a, sc, o, run);
+        all.push_back(r.metrics);
+        extra = {{"processes", sc.robots.size() + 1},
+                 {"wall_s", r.wall_s},
+                 {"dead_robots", r.dead},
+                 {"world_restarts", r.world_restarts}};
+      } else {
+        all.push_back(sim::run_netsim(sc, o).metrics);
+        extra = {{"wall_s", all.back().wall_s}};
+      }
+      wall[std::string(sim::to_string(m))] += extra["wall_s"].get<double>();
       const auto& r = all.back();
       per_run.push_back({{"method", std::string(sim::to_string(m))},
                          {"run", run},
@@ -194,8 +254,12 @@ void run(const NetsimArgs& a) {
                          {"max_robot_cpu_s", r.max_robot_cpu_s},
                          {"route_time_s", r.route_time_s},
                          {"travel_m", r.travel_m}});
+      per_run.back().update(extra);
     }
     out[std::string(sim::to_string(m))] = summary_json(sim::summarize(all));
+    out[std::string(sim::to_string(m))]["transport"] = a.transport;
+    out[std::string(sim::to_string(m))]["wall_s"] =
+        wall[std::string(sim::to_string(m))] / plan.runs;
     by_method[std::string(sim::to_string(m))] = all;
   }
   if (!a.out.empty()) {
@@ -238,6 +302,17 @@ void setup(CLI::App& app) {
                                "centralized|decentralized|both (default: both, or the file's)");
   auto* runs = c->add_option("--runs", args->runs, "runs of Table 7 (1..16)");
   c->add_option("--run", args->run, "the run of Table 7 (1..16) --write-scenario writes");
+  c->add_option("--transport", args->transport,
+                "sim (every robot in this process, simulated radio) | dds (one process per "
+                "robot plus a world process, Cyclone DDS)")
+      ->capture_default_str();
+  c->add_option("--kill-robot", args->kill_robot,
+                "dds: fault injection, this robot's process dies after --kill-at-step");
+  c->add_option("--kill-at-step", args->kill_at_step, "dds: the step after which it dies");
+  c->add_option("--world-restart-at-step", args->world_restart_at_step,
+                "dds: the world process dies after this step and a new one resumes the run");
+  c->add_option("--dds-timeout", args->dds_timeout_s, "dds: limit for one run [s]")
+      ->capture_default_str();
   auto* seed = c->add_option("--seed", args->seed, "world/placement seed (a file: options.seed)");
   auto* loss = c->add_option("--loss", args->loss, "radio message loss probability");
   c->add_option("--write-scenario", args->write_scenario,

@@ -661,6 +661,10 @@ DdsTransportStats DdsTransport::stats() const {
   return impl_->stats;
 }
 
+std::int32_t DdsTransport::participant_handle() const {
+  return impl_->ep.participant;
+}
+
 network::RobotId DdsTransport::self() const {
   return impl_->options.self;
 }

@@ -146,6 +146,9 @@ class DdsTransport final : public network::Transport {
   [[nodiscard]] std::size_t matched_receivers() const;
   [[nodiscard]] DdsTransportStats stats() const;
   [[nodiscard]] network::RobotId self() const;
+  /// The Cyclone participant (dds_entity_t), for more topics on the same participant (the
+  /// lockstep control of netsim_dds.hpp): one participant per process keeps discovery cheap.
+  [[nodiscard]] std::int32_t participant_handle() const;
   [[nodiscard]] const DdsTransportOptions& options() const;
 
  private:
