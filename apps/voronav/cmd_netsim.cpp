@@ -173,6 +173,26 @@ void write_scenario(const NetsimArgs& a) {
   std::cout << "wrote " << a.write_scenario << "\n";
 }
 
+/// Per robot: travel, work and what it sent, by message type.
+nlohmann::json robots_json(const sim::NetSimMetrics& m) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t i = 0; i < m.robots.size(); ++i) {
+    const auto& r = m.robots[i];
+    nlohmann::json sent = nlohmann::json::object();
+    for (int t = 1; t < network::kMessageTypeCount; ++t)
+      if (r.sent_by_type[static_cast<std::size_t>(t)].messages > 0)
+        sent[std::string(network::to_string(static_cast<network::MessageType>(t)))] =
+            r.sent_by_type[static_cast<std::size_t>(t)].messages;
+    out.push_back({{"id", i},
+                   {"travel_m", r.travel_m},
+                   {"work", r.work},
+                   {"sent_messages", r.sent_messages},
+                   {"sent_bytes", r.sent_bytes},
+                   {"sent", sent}});
+  }
+  return out;
+}
+
 /// One run with every robot its own process over Cyclone DDS (voronav/dds/netsim_dds.hpp).
 dds::DdsRunResult run_dds(const NetsimArgs& a, const sim::NetSimScenario& sc,
                           const sim::NetSimOptions& o, int run) {
@@ -253,7 +273,13 @@ void run(const NetsimArgs& a) {
                          {"cpu_s", r.cpu_s},
                          {"max_robot_cpu_s", r.max_robot_cpu_s},
                          {"route_time_s", r.route_time_s},
-                         {"travel_m", r.travel_m}});
+                         {"travel_m", r.travel_m},
+                         {"route_length_m", r.route_length_m},
+                         {"source_travel_m", r.source_travel_m},
+                         {"search_attempts", r.search_attempts},
+                         {"repairs", r.repairs},
+                         {"simulated_s", r.simulated_s},
+                         {"robots", robots_json(r)}});
       per_run.back().update(extra);
     }
     out[std::string(sim::to_string(m))] = summary_json(sim::summarize(all));

@@ -66,11 +66,12 @@ dds_entity_t must(dds_entity_t e, const char* what) {
 
 // ---- JSON of the metrics ----------------------------------------------------------------------
 json robot_metrics_json(const sim::RobotMetrics& m) {
-  return {{"work", m.work},
-          {"cpu_s", m.cpu_s},
-          {"travel_m", m.travel_m},
-          {"sent_bytes", m.sent_bytes},
-          {"sent_messages", m.sent_messages}};
+  json types = json::array();
+  for (const auto& t : m.sent_by_type)
+    types.push_back({t.messages, t.bytes});
+  return {{"sent_by_type", types},      {"work", m.work},
+          {"cpu_s", m.cpu_s},           {"travel_m", m.travel_m},
+          {"sent_bytes", m.sent_bytes}, {"sent_messages", m.sent_messages}};
 }
 sim::RobotMetrics robot_metrics_from(const json& j) {
   sim::RobotMetrics m;
@@ -79,15 +80,16 @@ sim::RobotMetrics robot_metrics_from(const json& j) {
   m.travel_m = j.at("travel_m").get<double>();
   m.sent_bytes = j.at("sent_bytes").get<std::uint64_t>();
   m.sent_messages = j.at("sent_messages").get<std::uint64_t>();
+  const auto& types = j.at("sent_by_type");
+  for (std::size_t t = 0; t < m.sent_by_type.size() && t < types.size(); ++t) {
+    m.sent_by_type[t].messages = types[t].at(0).get<std::uint64_t>();
+    m.sent_by_type[t].bytes = types[t].at(1).get<std::uint64_t>();
+  }
   return m;
 }
 
 json agent_report_json(const sim::AgentReport& a) {
-  json types = json::array();
-  for (const auto& t : a.sent_by_type)
-    types.push_back({t.messages, t.bytes});
   return {{"metrics", robot_metrics_json(a.metrics)},
-          {"sent_by_type", types},
           {"search_attempts", a.search_attempts},
           {"repairs", a.repairs},
           {"replans", a.replans},
@@ -100,11 +102,6 @@ json agent_report_json(const sim::AgentReport& a) {
 sim::AgentReport agent_report_from(const json& j) {
   sim::AgentReport a;
   a.metrics = robot_metrics_from(j.at("metrics"));
-  const auto& types = j.at("sent_by_type");
-  for (std::size_t t = 0; t < a.sent_by_type.size() && t < types.size(); ++t) {
-    a.sent_by_type[t].messages = types[t].at(0).get<std::uint64_t>();
-    a.sent_by_type[t].bytes = types[t].at(1).get<std::uint64_t>();
-  }
   a.search_attempts = j.at("search_attempts").get<int>();
   a.repairs = j.at("repairs").get<int>();
   a.replans = j.at("replans").get<int>();

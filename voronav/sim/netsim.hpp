@@ -17,6 +17,7 @@
 // the source has a route, travel distance of all robots, success.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -109,6 +110,8 @@ struct RobotMetrics {
   double travel_m = 0.0;
   std::uint64_t sent_bytes = 0;
   std::uint64_t sent_messages = 0;
+  /// Transmissions by message type (index = network::MessageType value).
+  std::array<network::TrafficCounter, network::kMessageTypeCount> sent_by_type{};
 };
 
 struct NetSimMetrics {

@@ -129,9 +129,7 @@ NetSimScenario hall_with_block(bool block) {
   return sc;
 }
 
-// DISABLED: the local detour is not yet found in this hall (the Repair answerers' points do not
-// continue the route points), so the run falls back to a new Search; see the report.
-TEST(NetSim, DISABLED_BlockedRouteIsRepairedLocallyWithFewerMessagesThanACentralizedReplan) {
+TEST(NetSim, BlockedRouteIsRepairedLocallyWithFewerMessagesThanACentralizedReplan) {
   auto run = [](Method m, bool block) {
     NetSimOptions o;
     o.method = m;

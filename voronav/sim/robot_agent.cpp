@@ -56,8 +56,8 @@ NetSimMetrics aggregate_metrics(const std::vector<AgentReport>& robots, std::siz
     M.replans += a.replans;
     M.corrupt_packets += a.corrupt_packets;
     for (std::size_t t = 0; t < by_type.size(); ++t) {
-      by_type[t].messages += a.sent_by_type[t].messages;
-      by_type[t].bytes += a.sent_by_type[t].bytes;
+      by_type[t].messages += rm.sent_by_type[t].messages;
+      by_type[t].bytes += rm.sent_by_type[t].bytes;
     }
     M.robots.push_back(rm);
   }
@@ -204,8 +204,8 @@ void RobotAgent::transmit(RobotId to, std::vector<std::uint8_t> bytes) {
   report_.metrics.sent_bytes += bytes.size();
   report_.metrics.sent_messages += 1;
   if (type < kMessageTypeCount) {
-    report_.sent_by_type[type].messages += 1;
-    report_.sent_by_type[type].bytes += bytes.size();
+    report_.metrics.sent_by_type[type].messages += 1;
+    report_.metrics.sent_by_type[type].bytes += bytes.size();
   }
   if (ctx_.message_log)
     ctx_.message_log->push_back(
@@ -878,11 +878,34 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> RobotAgent::find_break(
   return br;
 }
 
+/// Shrinks the free disc of every point of `path` to the nearest cell this robot knows occupied:
+/// route points keep the clearances of the older maps they were made from, so after an obstacle
+/// change their discs may hold it, and the continuity rule would still join points across the
+/// break (docs/reproductions/networked.md, "Repair").
+void RobotAgent::shrink_to_map(std::vector<VoronoiPoint>& path) {
+  const auto& g = r_.map.world();
+  for (auto& p : path) {
+    const auto c = g.world_to_cell(p.position);
+    if (!c) continue;
+    const int k = static_cast<int>(std::ceil(p.clearance / g.resolution)) + 1;
+    double best = p.clearance;
+    for (int dy = -k; dy <= k; ++dy)
+      for (int dx = -k; dx <= k; ++dx) {
+        const Cell d{c->x + dx, c->y + dy};
+        if (r_.map.at(d) != kOccupied) continue;
+        best = std::min(best, distance(g.cell_center(d), p.position) - 0.5 * g.resolution);
+      }
+    report_.metrics.work += static_cast<std::uint64_t>((2 * k + 1) * (2 * k + 1));
+    p.clearance = static_cast<float>(std::max(best, 0.0));
+  }
+}
+
 /// A detour through the robot's open points joining path[0..from] to path[to..]; empty when
 /// none.
-std::vector<VoronoiPoint> RobotAgent::detour(const std::vector<VoronoiPoint>& path,
-                                             std::uint32_t from, std::uint32_t to) {
+std::vector<VoronoiPoint> RobotAgent::detour(std::vector<VoronoiPoint> path, std::uint32_t from,
+                                             std::uint32_t to) {
   const auto& own = points().open;
+  shrink_to_map(path);  // this robot's own view of the change (the sender's is in the clearances)
   std::vector<VoronoiPoint> comb;
   std::vector<double> start;
   double along = 0.0;
@@ -901,8 +924,19 @@ std::vector<VoronoiPoint> RobotAgent::detour(const std::vector<VoronoiPoint>& pa
     comb.push_back(path[i]);
     start.push_back(kInf);
   }
-  const auto s = timed([&] { return search_points(comb, start, opt().robot_radius_m); });
-  report_.metrics.work += s.work;
+  // As in try_continue, the robot may also move straight where its own map knows the move is
+  // free: here between its points and the route points (at most 6 m apart), never route point
+  // to route point (that would be the broken route again).
+  std::size_t los_cells = 0;
+  auto own_edge = [&](std::size_t i, std::size_t j) {
+    if ((i < n_pre || i >= n_own_end) && (j < n_pre || j >= n_own_end)) return false;
+    const Vec2 a = comb[i].position, b = comb[j].position;
+    if (distance(a, b) > 6.0) return false;
+    los_cells += static_cast<std::size_t>(distance(a, b) / scen().world.resolution()) + 1;
+    return segment_known_free(a, b);
+  };
+  const auto s = timed([&] { return search_points(comb, start, opt().robot_radius_m, own_edge); });
+  report_.metrics.work += s.work + los_cells;
   double best = kInf;
   std::size_t bi = 0;
   for (std::size_t i = n_own_end; i < comb.size(); ++i) {
@@ -940,10 +974,11 @@ std::uint32_t RobotAgent::next_repair_num() {
 
 void RobotAgent::check_relay_route() {
   auto& r = r_;
-  const auto& path = r.saved->whole_path;
+  auto path = r.saved->whole_path;
   const auto br = find_break(path, 0);
   if (!br) return;
   ++report_.repairs;
+  shrink_to_map(path);  // so the Repair tells the others which free discs the change cut
   auto fixed = detour(path, br->first, br->second);
   if (!fixed.empty()) {
     PathMessage p = *r.saved;
@@ -993,7 +1028,17 @@ void RobotAgent::on_repair_path(PathMessage m) {
     return;
   }
   if (!m.relays.empty() && m.relays.back() == r.id) m.relays.pop_back();
-  if (r.saved) r.saved->whole_path = m.whole_path;
+  if (r.saved && !m.whole_path.empty()) {
+    // Keep this relay's own piece before the repaired part (the answer starts at a point of the
+    // path the Repair carried, which may be a suffix of this relay's saved path).
+    auto& w = r.saved->whole_path;
+    auto at = std::find_if(w.begin(), w.end(), [&](const VoronoiPoint& p) {
+      return distance(p.position, m.whole_path.front().position) < 1e-3;
+    });
+    if (at == w.end()) at = w.begin();  // not on it: the answer replaces it (as before)
+    w.erase(at, w.end());
+    w.insert(w.end(), m.whole_path.begin(), m.whole_path.end());
+  }
   if (!m.relays.empty()) send_reliable(m.relays.back(), m);
 }
 
@@ -1029,6 +1074,7 @@ void RobotAgent::check_source_route() {
   if (!br) return;
   if (blocked_since_ < 0.0) blocked_since_ = now_;
   ++report_.repairs;
+  shrink_to_map(rest);  // as in check_relay_route
   auto fixed = detour(rest, br->first, br->second);
   if (!fixed.empty()) {
     route_.erase(route_.begin() + static_cast<std::ptrdiff_t>(std::min(next, route_.size())),

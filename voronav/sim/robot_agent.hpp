@@ -42,8 +42,7 @@ struct AgentContext {
 /// One robot's share of the run metrics (NetSimMetrics is the sum over robots, see
 /// aggregate_metrics()).
 struct AgentReport {
-  RobotMetrics metrics;  ///< work, CPU, travel, bytes and messages sent
-  std::array<network::TrafficCounter, network::kMessageTypeCount> sent_by_type{};
+  RobotMetrics metrics;  ///< work, CPU, travel, bytes and messages sent (also by type)
   int search_attempts = 0;
   int repairs = 0;
   int replans = 0;
@@ -193,7 +192,8 @@ class RobotAgent {
   // decentralized: Repair (Tables 4-5)
   std::optional<std::pair<std::uint32_t, std::uint32_t>> find_break(
       const std::vector<network::VoronoiPoint>& path, std::size_t from);
-  std::vector<network::VoronoiPoint> detour(const std::vector<network::VoronoiPoint>& path,
+  void shrink_to_map(std::vector<network::VoronoiPoint>& path);
+  std::vector<network::VoronoiPoint> detour(std::vector<network::VoronoiPoint> path,
                                             std::uint32_t from, std::uint32_t to);
   void check_relay_route();
   void on(const network::Header& h, const network::RepairMessage& m);
