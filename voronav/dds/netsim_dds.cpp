@@ -343,6 +343,21 @@ dds_entity_t participant_for(const LockstepLink& link, dds_entity_t& domain) {
 
 }  // namespace
 
+void LockstepLink::validate() const {
+  if (domain_id > 230)
+    throw Error("--domain", 0, "expected 0..230, got " + std::to_string(domain_id));
+  if (partition.empty()) throw Error("--partition", 0, "expected a non-empty partition name");
+  auto positive = [](double v, const char* name) {
+    if (!(v > 0.0) || !std::isfinite(v))
+      throw Error(name, 0,
+                  "expected a positive finite number of seconds, got " + std::to_string(v));
+  };
+  positive(startup_timeout_s, "--startup-timeout");
+  positive(step_timeout_s, "--step-timeout");
+  positive(world_timeout_s, "--world-timeout");
+  positive(payload_timeout_s, "payload_timeout_s");
+}
+
 std::string metrics_to_json(const sim::NetSimMetrics& m) {
   json by_type = json::object();
   for (const auto& [k, c] : m.by_type)
@@ -413,6 +428,9 @@ sim::NetSimMetrics metrics_from_json(const std::string& text) {
 
 // ---- one robot --------------------------------------------------------------------------------
 int run_robot_process(const RobotProcessOptions& o) {
+  o.link.validate();
+  if (!(o.loss >= 0.0 && o.loss <= 1.0))
+    throw Error("--loss", 0, "expected a probability in [0, 1], got " + std::to_string(o.loss));
   const auto file = sim::load_netsim_scenario(o.scenario_path);
   const auto& sc = file.scenario;
   const auto& opts = file.options;
@@ -565,6 +583,7 @@ int run_robot_process(const RobotProcessOptions& o) {
 
 // ---- the world --------------------------------------------------------------------------------
 int run_world_process(const WorldProcessOptions& o) {
+  o.link.validate();
   const auto file = sim::load_netsim_scenario(o.scenario_path);
   const auto& sc = file.scenario;
   const auto& opts = file.options;
@@ -753,6 +772,9 @@ int run_world_process(const WorldProcessOptions& o) {
 // ---- the launcher -----------------------------------------------------------------------------
 DdsRunResult run_netsim_dds(const DdsRunOptions& o) {
   if (o.scenario_path.empty()) throw Error("scenario", 0, "a scenario file is required");
+  o.link.validate();
+  if (!(o.timeout_s > 0.0) || !std::isfinite(o.timeout_s))
+    throw Error("--dds-timeout", 0, "expected a positive finite number of seconds");
   if (!(o.loss >= 0.0 && o.loss <= 1.0))
     throw Error("--loss", 0, "expected a probability in [0, 1]");
   const auto file = sim::load_netsim_scenario(o.scenario_path);  // errors before any process

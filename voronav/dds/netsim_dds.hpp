@@ -48,6 +48,8 @@ struct LockstepLink {
   double step_timeout_s = 10.0;     ///< world: a robot silent this long in one step is dead [s]
   double world_timeout_s = 30.0;    ///< robot: no Tick this long, the world is lost [s]
   double payload_timeout_s = 2.0;   ///< robot: wait this long for the packets a Tick announces [s]
+  /// Throws voronav::Error naming the option (--domain, --step-timeout, ...) that is wrong.
+  void validate() const;
 };
 
 struct RobotProcessOptions {

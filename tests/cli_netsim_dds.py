@@ -1,0 +1,132 @@
+#!/usr/bin/env python3
+"""End-to-end checks of the networked-robot run with every robot its own process over Cyclone DDS
+(`voronav netsim --transport dds`, `voronav robot`, `voronav netsim-world`; issue #8).
+Usage: cli_netsim_dds.py VORONAV_BINARY REPO_ROOT CASE.
+
+The multi-process run steps the same robot agents as the in-process simulator in lockstep, so with
+no loss every figure but CPU and wall time must be the same as with the simulated radio."""
+import json
+import os
+import sys
+import tempfile
+import time
+
+from cli_util import check, runner
+
+BIN, ROOT, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
+CORRIDOR = os.path.join(ROOT, "data", "netsim", "corridor.yaml")
+
+run = runner(BIN, timeout=600)
+
+# Fields that depend on the machine, not on the run.
+MACHINE = {"cpu_s", "max_robot_cpu_s", "wall_s", "processes", "dead_robots", "world_restarts"}
+
+
+def per_run(*args):
+    """Runs `voronav netsim ARGS --out DIR` and returns the per-run records of its JSON."""
+    with tempfile.TemporaryDirectory() as d:
+        run("netsim", *args, "--out", d)
+        files = [f for f in os.listdir(d) if f.startswith("netsim_") and f.endswith(".json")]
+        check(len(files) == 1, f"one result file, got {files}")
+        return json.load(open(os.path.join(d, files[0])))["runs"]
+
+
+def same_runs(a, b, what):
+    check(len(a) == len(b) and len(a) > 0, f"{what}: {len(a)} vs {len(b)} runs")
+    for x, y in zip(a, b):
+        for k, v in x.items():
+            if k in MACHINE:
+                continue
+            check(y.get(k) == v, f"{what}, {x['method']} run {x['run']}: {k} is {y.get(k)} over "
+                                 f"DDS, {v} with the simulated radio")
+
+
+def case_scenario1_equals_sim():
+    # Table 6 scenario 1 (6 robots): runs 1..4 (the four placements) and 5 (first change).
+    for m in ("centralized", "decentralized"):
+        sim = per_run("--scenario", "1", "--runs", "5", "--method", m)
+        dds = per_run("--scenario", "1", "--runs", "5", "--method", m, "--transport", "dds")
+        same_runs(sim, dds, "scenario 1")
+        check(all(r["success"] for r in dds), "every run succeeds")
+        check(all(r["processes"] == 7 and r["dead_robots"] == [] for r in dds),
+              "6 robot processes + the world, nobody dead")
+
+
+def case_scenario3_json():
+    # The acceptance command: scenario 3 (12 robot processes) over DDS.
+    p = run("netsim", "--scenario", "3", "--runs", "1", "--transport", "dds", "--json")
+    d = json.loads(p.stdout)
+    check(set(d) == {"centralized", "decentralized"}, f"keyed by method: {list(d)}")
+    for m, v in d.items():
+        check(v["success_rate"] == 1.0 and v["transport"] == "dds", f"{m}: {v}")
+    s = json.loads(run("netsim", "--scenario", "3", "--runs", "1", "--json").stdout)
+    for m in d:
+        for k in ("messages", "traffic_bytes", "computation", "route_time_s", "travel_m"):
+            check(d[m][k] == s[m][k], f"{m} {k}: dds {d[m][k]} vs sim {s[m][k]}")
+
+
+def case_killed_relay():
+    # The corridor: the route comes back through every robot. Robot 5's process dies after step
+    # 20, before the Path answer passes it: the answer is lost at that hop, the source searches
+    # again and the others bridge the gap.
+    base = per_run("--scenario", CORRIDOR, "--method", "decentralized")[0]
+    check(base["success"] and base["search_attempts"] == 1, f"the plain run: {base}")
+    t0 = time.monotonic()
+    r = per_run("--scenario", CORRIDOR, "--method", "decentralized", "--transport", "dds",
+                "--kill-robot", "5", "--kill-at-step", "20")[0]
+    check(r["success"], f"routed around the dead relay: {r}")
+    check(r["dead_robots"] == [5], f"the world declared robot 5 dead: {r['dead_robots']}")
+    check(r["search_attempts"] >= 2 and r["route_time_s"] > base["route_time_s"],
+          f"by a new search, later than without the fault: {r['search_attempts']} attempts, "
+          f"route at {r['route_time_s']} s vs {base['route_time_s']} s")
+    check(r["robots"][6]["sent"].get("path", 0) > 1, "robot 6 retried its Path to the dead relay")
+    check(time.monotonic() - t0 < 300, "nothing hangs")
+
+
+def case_world_restart():
+    # The world process dies after step 10; a new one takes over from the robots' last reports.
+    # Lockstep: the result is the same as without the fault.
+    plain = per_run("--scenario", CORRIDOR, "--method", "decentralized", "--transport", "dds")[0]
+    r = per_run("--scenario", CORRIDOR, "--method", "decentralized", "--transport", "dds",
+                "--world-restart-at-step", "10")[0]
+    check(r["world_restarts"] == 1, f"one restart: {r['world_restarts']}")
+    for k in ("success", "messages", "traffic_bytes", "computation", "route_time_s", "travel_m"):
+        check(r[k] == plain[k], f"{k}: {r[k]} after the restart vs {plain[k]}")
+
+
+def case_loss():
+    # 20 % of the receptions lost at every robot's transport: the retries still get a route.
+    for m in ("centralized", "decentralized"):
+        r = per_run("--scenario", CORRIDOR, "--method", m, "--transport", "dds", "--loss",
+                    "0.2")[0]
+        check(r["success"], f"{m} with 20 % loss: {r}")
+
+
+def case_robot_errors():
+    p = run("robot", "--id", "99", "--scenario", CORRIDOR, expect=2)
+    check("99" in p.stderr and "10 robots" in p.stderr, f"names the id and the count: {p.stderr}")
+    p = run("robot", "--id", "0", "--scenario", CORRIDOR, "--transport", "sim", expect=2)
+    check("--transport" in p.stderr, p.stderr)
+    p = run("robot", "--id", "0", "--scenario", "nonexistent.yaml", expect=2)
+    check("nonexistent.yaml" in p.stderr, p.stderr)
+    p = run("netsim", "--scenario", "1", "--kill-robot", "2", expect=2)
+    check("--transport dds" in p.stderr, p.stderr)
+    p = run("netsim-world", "--scenario", CORRIDOR, "--step-timeout", "nan", expect=2)
+
+
+def case_lone_processes_time_out():
+    # A robot with no peers and a world with no robots give up with their own status, in time.
+    dom, part = str(1 + os.getpid() % 200), f"lone-{os.getpid()}"
+    t0 = time.monotonic()
+    run("robot", "--id", "0", "--scenario", CORRIDOR, "--domain", dom, "--partition", part,
+        "--startup-timeout", "1", expect=3)
+    run("netsim-world", "--scenario", CORRIDOR, "--domain", dom, "--partition", part,
+        "--startup-timeout", "1", expect=3)
+    check(time.monotonic() - t0 < 30, "both exit within their timeouts")
+
+
+CASES = {k[5:]: v for k, v in globals().items() if k.startswith("case_")}
+if CASE not in CASES:
+    sys.exit(f"unknown case {CASE}; known: {', '.join(sorted(CASES))}")
+CASES[CASE]()
+print("ok")
