@@ -159,6 +159,8 @@ def case_demo():
         check(co["valid"] is True and co["status"] == "ok", str(co))
         check(co["makespan_s"] >= max(a["arrival_s"] for a in co["agents"]) - 1e-9, str(co))
         check(summary["networked"]["success"] is True, str(summary["networked"]))
+        dds = summary["networked_dds"]
+        check(dds["ok"] and dds["same_as_in_process"], f"the DDS run equals the in-process one: {dds}")
         check(summary["exploration"]["collisions"] == 0, str(summary["exploration"]))
         check(summary["exploration"]["coverage_pct"] > 20, str(summary["exploration"]))
         check(summary["movingai"]["mismatches"] == 0 and summary["movingai"]["unsolved"] == 0,

@@ -24,6 +24,7 @@
 #include "topo_pictures.hpp"
 #include "voronav/coordination/coordinator.hpp"
 #include "voronav/coordination/scenario.hpp"
+#include "voronav/dds/netsim_dds.hpp"
 #include "voronav/exploration/explorer.hpp"
 #include "voronav/field/distance_transform.hpp"
 #include "voronav/io/floorplan.hpp"
@@ -35,6 +36,7 @@
 #include "voronav/render/figure.hpp"
 #include "voronav/report/replay_html.hpp"
 #include "voronav/sim/netsim.hpp"
+#include "voronav/sim/scenario_file.hpp"
 #include "voronav/sim/world.hpp"
 #include "voronav/topology/topo_planner.hpp"
 
@@ -358,6 +360,31 @@ struct Demo {
                             {"repairs", m.repairs},
                             {"travel_m", m.travel_m},
                             {"page", "netsim.html"}};
+    // The same run with every robot its own process over Cyclone DDS (issue #8): lockstep, so
+    // the figures must be the same.
+    const auto file = (args.out / "netsim_scenario.yaml").string();
+    o.record = false;
+    sim::save_netsim_scenario(file, sc, o);
+    dds::DdsRunOptions d;
+    d.scenario_path = file;
+    d.work_dir = args.out.string();
+    d.timeout_s = 600.0;
+    const auto r = dds::run_netsim_dds(d);
+    const bool same = r.ok && r.metrics.messages == m.messages &&
+                      r.metrics.traffic_bytes == m.traffic_bytes &&
+                      r.metrics.route_time_s == m.route_time_s &&
+                      r.metrics.computation == m.computation && r.metrics.travel_m == m.travel_m;
+    summary["networked_dds"] = {{"processes", team + 1},
+                                {"ok", r.ok},
+                                {"error", r.error},
+                                {"success", r.metrics.success},
+                                {"messages", r.metrics.messages},
+                                {"traffic_bytes", r.metrics.traffic_bytes},
+                                {"route_time_s", r.metrics.route_time_s},
+                                {"same_as_in_process", same},
+                                {"wall_s", r.wall_s},
+                                {"in_process_wall_s", m.wall_s},
+                                {"scenario", "netsim_scenario.yaml"}};
   }
 
   void exploration_stage() {
@@ -426,7 +453,8 @@ void run(const DemoArgs& a) {
   progress.begin("coordinating a team with collision maps");
   d.coordination_stage();
   progress.end();
-  progress.begin("networked robots: decentralized route with an obstacle change");
+  progress.begin(
+      "networked robots: decentralized route with an obstacle change, in-process and over DDS");
   d.netsim_stage();
   progress.end();
   progress.begin("swarm exploration of an unknown copy of the map");
@@ -472,6 +500,13 @@ void run(const DemoArgs& a) {
             << (s["networked"]["success"].get<bool>() ? "found" : "NOT found") << " after "
             << num(s["networked"]["route_time_s"]) << " s, " << s["networked"]["messages"]
             << " messages, " << s["networked"]["traffic_bytes"] << " bytes (netsim.html)\n"
+            << "  over DDS:     " << s["networked_dds"]["processes"] << " processes, "
+            << (s["networked_dds"]["ok"].get<bool>()
+                    ? (s["networked_dds"]["same_as_in_process"].get<bool>()
+                           ? std::string("same route and messages as in-process")
+                           : std::string("DIFFERENT from in-process"))
+                    : "FAILED: " + s["networked_dds"]["error"].get<std::string>())
+            << ", " << num(s["networked_dds"]["wall_s"]) << " s wall\n"
             << "  exploration:  4 robots, tree method, coverage "
             << num(s["exploration"]["coverage_pct"]) << " % in 600 s, "
             << s["exploration"]["collisions"] << " collisions (explore.html)\n"
