@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <random>
@@ -131,6 +132,8 @@ void validate(const DdsTransportOptions& o) {
   if (!(o.loss_probability >= 0.0 && o.loss_probability <= 1.0))
     throw Error("loss_probability", 0, "expected a probability in [0, 1]");
   if (o.history_depth < 1) throw Error("history_depth", 0, "expected >= 1");
+  if (o.pose_history < 1) throw Error("pose_history", 0, "expected >= 1");
+  if (!(o.pose_max_age_s >= 0.0)) throw Error("pose_max_age_s", 0, "expected >= 0 (or infinity)");
   if (o.max_payload_bytes == 0) throw Error("max_payload_bytes", 0, "expected >= 1");
   if (!(o.max_blocking_s >= 0.0) || !std::isfinite(o.max_blocking_s))
     throw Error("max_blocking_s", 0, "expected a finite number of seconds >= 0");
@@ -353,6 +356,15 @@ struct DdsTransport::Impl {
     return std::nullopt;
   }
 
+  /// Age at t of the pose pose_at(id, t) returns [s] (infinity when none).
+  double pose_age(std::uint32_t id, double t) const {
+    auto it = pose_hist.find(id);
+    if (it == pose_hist.end()) return std::numeric_limits<double>::infinity();
+    for (auto p = it->second.rbegin(); p != it->second.rend(); ++p)
+      if (p->first <= t + 1e-9) return t - p->first;
+    return std::numeric_limits<double>::infinity();
+  }
+
   void drain_poses() {
     constexpr std::size_t kBatch = 64;
     for (;;) {
@@ -565,7 +577,8 @@ std::vector<network::Neighbour> DdsTransport::nearby(network::RobotId self) {
   for (const auto& [id, hist] : impl_->pose_hist) {
     if (id == self.value) continue;
     const auto p = impl_->pose_at(id, now);
-    if (p && distance(*p, *own) <= impl_->options.radio_range_m)
+    if (p && impl_->pose_age(id, now) <= impl_->options.pose_max_age_s &&
+        distance(*p, *own) <= impl_->options.radio_range_m)
       out.push_back({network::RobotId{id}, *p});
   }
   return out;

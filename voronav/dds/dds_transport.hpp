@@ -67,6 +67,9 @@ struct DdsTransportOptions {
   bool range_at_send_time = false;
   /// Poses kept per robot for range_at_send_time and nearby() (>= 1).
   int pose_history = 16;
+  /// nearby() ignores robots whose pose is older than this [s] (a robot that stopped publishing,
+  /// e.g. a dead process, is no neighbour). Infinity = any pose counts.
+  double pose_max_age_s = std::numeric_limits<double>::infinity();
   /// Clock for Packet::sent_at_s and the pose stamps [s]; default: steady clock (CLOCK_MONOTONIC,
   /// shared by every process of one machine, so latencies between local processes are meaningful).
   std::function<double()> clock{};

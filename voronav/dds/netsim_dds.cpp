@@ -451,6 +451,7 @@ int run_robot_process(const RobotProcessOptions& o) {
   to.partition = o.link.partition;
   to.radio_range_m = opts.radio.range_m;
   to.range_at_send_time = true;
+  to.pose_max_age_s = 0.75 * opts.dt_s;  // live robots publish every step; the dead do not
   to.loss_probability = o.loss;
   to.loss_seed = opts.seed ^ (0x51ED27ull * (o.id + 1));
   to.history_depth = 8192;
