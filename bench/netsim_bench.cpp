@@ -26,15 +26,16 @@ double side_for(int robots, int robots_ref, double side_ref) {
   return side_ref * std::sqrt(static_cast<double>(robots) / robots_ref);
 }
 
-voronav::sim::NetSimMetrics run_case(int robots, double size_m, Method method, double limit_s,
-                                     std::uint64_t seed, voronav::sim::NetSimOptions o = {}) {
+voronav::sim::NetSimMetrics run_case(
+    int robots, double size_m, Method method, double limit_s, std::uint64_t seed,
+    voronav::sim::NetSimOptions o = voronav::sim::NetSimOptions{}.scale_options()) {
   const auto sc = voronav::sim::make_scale_run(robots, size_m, seed);
   o.method = method;
   o.time_limit_s = limit_s;
   return voronav::sim::run_netsim(sc, o).metrics;
 }
 
-/// KEY=VALUE overrides of the scale-related options (ablations).
+/// KEY=VALUE overrides of the scale options (ablations), applied after scale_options().
 bool set_option(voronav::sim::NetSimOptions& o, const std::string& kv) {
   const auto eq = kv.find('=');
   if (eq == std::string::npos) return false;
@@ -101,7 +102,7 @@ int run_one(int argc, char** argv) {
   const Method method = voronav::sim::parse_method(argv[4]);
   const double limit_s = argc > 5 ? std::atof(argv[5]) : 600.0;
   const std::uint64_t seed = argc > 6 ? std::strtoull(argv[6], nullptr, 10) : 1;
-  voronav::sim::NetSimOptions o;
+  auto o = voronav::sim::NetSimOptions{}.scale_options();
   for (int i = 7; i < argc; ++i)
     if (!set_option(o, argv[i])) {
       std::fprintf(stderr, "unknown option %s\n", argv[i]);

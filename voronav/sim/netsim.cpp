@@ -75,6 +75,16 @@ void NetSimOptions::validate() const {
   radio.validate();
 }
 
+NetSimOptions NetSimOptions::scale_options() const {
+  NetSimOptions o = *this;
+  o.search_timeout_per_m = 2.5;
+  o.search_activity_s = 30.0;
+  o.keep_bridge_on_new_search = true;
+  o.source_straight_start = true;
+  o.walk_replan_whole_map = true;
+  return o;
+}
+
 namespace {
 
 RadioOptions radio_opts(const NetSimOptions& o) {
