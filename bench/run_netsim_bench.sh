@@ -33,11 +33,9 @@ PY
 done
 {
   echo
-  echo "## Scale runs (office worlds at scenario 3's density, 600 s limit)"
+  echo "## Scale runs (bench/run_netsim_scale.sh; NetSimOptions::scale_options(), seed 1)"
   echo
-  echo '```'
-  "$build/bin/netsim_bench" --benchmark_counters_tabular=true 2>/dev/null | sed -n '/^-----/,$p'
-  echo '```'
+  "$root/bench/run_netsim_scale.sh" "$build"
 } >> "$out"
 rm -rf "$tmp"
 echo "wrote $out"

@@ -41,6 +41,7 @@ void SimRadio::ensure(RobotId id) {
     positions_.resize(n);
     known_.resize(n, 0);
     inbox_.resize(n);
+    bucket_.resize(n, 0);
     stats_.sent_by_robot.resize(n);
     stats_.received_by_robot.resize(n);
   }
@@ -49,8 +50,46 @@ void SimRadio::ensure(RobotId id) {
 void SimRadio::update_position(RobotId id, Vec2 position) {
   if (!position.is_finite()) throw Error("radio", 0, "robot position must be finite");
   ensure(id);
+  const std::int64_t b = bucket_of(position);
+  if (!known_[id.value] || bucket_[id.value] != b) {
+    if (known_[id.value]) std::erase(buckets_[bucket_[id.value]], id.value);
+    buckets_[b].push_back(id.value);
+    bucket_[id.value] = b;
+  }
   positions_[id.value] = position;
   known_[id.value] = 1;
+}
+
+namespace {
+
+std::int64_t bucket_index(double v, double side) {
+  return static_cast<std::int64_t>(std::clamp(std::floor(v / side), -1e9, 1e9));
+}
+
+std::int64_t bucket_key(std::int64_t ix, std::int64_t iy) {
+  return static_cast<std::int64_t>((static_cast<std::uint64_t>(ix) << 32) ^
+                                   (static_cast<std::uint64_t>(iy) & 0xFFFFFFFFull));
+}
+
+}  // namespace
+
+std::int64_t SimRadio::bucket_of(Vec2 p) const {
+  const double side = std::max(options_.range_m, 1e-3);
+  return bucket_key(bucket_index(p.x, side), bucket_index(p.y, side));
+}
+
+void SimRadio::candidates(RobotId id, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  if (id.value >= known_.size() || !known_[id.value]) return;
+  const double side = std::max(options_.range_m, 1e-3);
+  const Vec2 p = positions_[id.value];
+  const std::int64_t ix = bucket_index(p.x, side), iy = bucket_index(p.y, side);
+  for (std::int64_t dy = -1; dy <= 1; ++dy)
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      const auto it = buckets_.find(bucket_key(ix + dx, iy + dy));
+      if (it != buckets_.end()) out.insert(out.end(), it->second.begin(), it->second.end());
+    }
+  std::sort(out.begin(), out.end());
 }
 
 void SimRadio::set_time(double now_s) {
@@ -74,7 +113,8 @@ std::vector<Neighbour> SimRadio::nearby(RobotId self) {
 
 std::vector<RobotId> SimRadio::neighbours(RobotId id) const {
   std::vector<RobotId> out;
-  for (std::uint32_t i = 0; i < known_.size(); ++i)
+  candidates(id, scratch_);
+  for (std::uint32_t i : scratch_)
     if (i != id.value && in_range(id, RobotId{i})) out.push_back(RobotId{i});
   return out;
 }
@@ -129,7 +169,10 @@ void SimRadio::send(RobotId from, RobotId to, std::span<const std::uint8_t> byte
 void SimRadio::broadcast(RobotId from, std::span<const std::uint8_t> bytes) {
   ensure(from);
   account(from, bytes);
-  for (std::uint32_t i = 0; i < known_.size(); ++i)
+  // Ascending ids, as a scan of every robot would deliver (the loss draws depend on the order).
+  std::vector<std::uint32_t> near;
+  candidates(from, near);
+  for (std::uint32_t i : near)
     if (i != from.value && in_range(from, RobotId{i})) deliver(from, RobotId{i}, kBroadcast, bytes);
 }
 

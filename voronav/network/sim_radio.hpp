@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <random>
+#include <unordered_map>
 #include <vector>
 
 #include "voronav/network/messages.hpp"
@@ -79,6 +80,9 @@ class SimRadio final : public Transport {
   void account(RobotId from, std::span<const std::uint8_t> bytes);
   void deliver(RobotId from, RobotId to, RobotId addressed, std::span<const std::uint8_t> bytes);
   void ensure(RobotId id);
+  /// Robots in the grid buckets around `id` (candidates for range checks), ascending ids.
+  void candidates(RobotId id, std::vector<std::uint32_t>& out) const;
+  [[nodiscard]] std::int64_t bucket_of(Vec2 p) const;
 
   RadioOptions options_;
   double now_ = 0.0;
@@ -87,6 +91,11 @@ class SimRadio final : public Transport {
   std::vector<Vec2> positions_;
   std::vector<std::uint8_t> known_;
   std::vector<std::vector<Pending>> inbox_;  ///< per receiver
+  // Spatial index: square buckets of side range_m, so the robots within range of a robot are in
+  // the 3 x 3 buckets around its own (broadcasts and nearby() need not visit every robot).
+  std::vector<std::int64_t> bucket_;  ///< per robot, its bucket key (known robots only)
+  std::unordered_map<std::int64_t, std::vector<std::uint32_t>> buckets_;
+  mutable std::vector<std::uint32_t> scratch_;
   RadioStats stats_;
 };
 

@@ -63,12 +63,26 @@ void NetSimOptions::validate() const {
   pos(repair_timeout_s, "repair_timeout_s");
   if (!(robot_radius_m >= 0.0) || !std::isfinite(robot_radius_m))
     throw Error("netsim.robot_radius_m", 0, "expected a finite number >= 0");
+  if (!(search_timeout_per_m >= 0.0) || !std::isfinite(search_timeout_per_m))
+    throw Error("netsim.search_timeout_per_m", 0, "expected a finite number >= 0");
+  if (!(search_activity_s >= 0.0) || !std::isfinite(search_activity_s))
+    throw Error("netsim.search_activity_s", 0, "expected a finite number >= 0");
   if (!(path_wait_s >= 0.0) || !std::isfinite(path_wait_s))
     throw Error("netsim.path_wait_s", 0, "expected a finite number >= 0");
   if (max_search_attempts < 1 || link_retries < 0 || hop_limit < 1 || hop_limit > 255 ||
       repair_hops < 1)
     throw Error("netsim", 0, "attempts/retries/hop limits out of range");
   radio.validate();
+}
+
+NetSimOptions NetSimOptions::scale_options() const {
+  NetSimOptions o = *this;
+  o.search_timeout_per_m = 2.5;
+  o.search_activity_s = 30.0;
+  o.keep_bridge_on_new_search = true;
+  o.source_straight_start = true;
+  o.walk_replan_whole_map = true;
+  return o;
 }
 
 namespace {

@@ -68,6 +68,30 @@ struct NetSimOptions {
   /// walks over to sense the gap itself [s].
   double bridge_wait_s = 2.0;
   double search_timeout_s = 60.0;  ///< source retries the Search with Num+1 after this [s]
+  // Scale options (docs/reproductions/networked.md, "Scale"). Off by default: the Table 6/7
+  // results are those of the protocol without them (with them, scenarios 1 and 3 lose runs);
+  // scale_options() turns on the set the scale runs use.
+  /// Adaptive retry: the source waits at least this many seconds per metre of straight-line
+  /// distance from where it starts the Search to the destination (a Search that must bridge
+  /// gaps needs ~2 s/m: every hop costs bridge_wait_s plus a walk). 0 = the fixed timeout only.
+  double search_timeout_per_m = 0.0;
+  /// The source pushes its retry back to at least now + this whenever it overhears a Search of
+  /// its current Num from a neighbour (the Search is still spreading near it) [s]; 0 = off.
+  double search_activity_s = 0.0;
+  /// A robot that is bridging a gap (figure 18) when a Search with a new Num arrives keeps
+  /// walking and tries the new Search's points as it senses, instead of starting over.
+  bool keep_bridge_on_new_search = false;
+  /// The source's start point (its own position, a pseudo open point) may join the source's own
+  /// open points by a straight move its map knows is free, as own points join each other.
+  bool source_straight_start = false;
+  /// A continuing robot counts as the frontier (and walks to the destination itself) when no
+  /// radio neighbour is > 1 m closer to the destination than its nearest open point, the rule by
+  /// which a receiver decides to bridge; false: than the robot's position (older rule, under
+  /// which a Search could stop where no neighbour would bridge and the sender would not walk).
+  bool frontier_by_points = false;
+  /// When a robot's walk (bridge, destination) cannot be planned in the window around its two
+  /// ends (known walls close it), plan again on a window holding the robot's whole local map.
+  bool walk_replan_whole_map = false;
   int max_search_attempts = 8;
   double link_timeout_s = 0.3;  ///< hop-by-hop retry after no LinkAck [s]
   int link_retries = 6;
@@ -75,7 +99,11 @@ struct NetSimOptions {
   int repair_hops = 2;            ///< Repair reaches neighbours up to this many hops
   double collect_s = 1.5;         ///< centralized: wait this long without new Ack before planning
   double repair_timeout_s = 8.0;  ///< decentralized: source re-searches when blocked this long
-  bool record = false;            ///< keep a Recording of every step
+  /// These options with the scale options the scale runs use (bench/netsim_bench.cpp):
+  /// search_timeout_per_m 2.5, search_activity_s 30, keep_bridge_on_new_search,
+  /// source_straight_start and walk_replan_whole_map (frontier_by_points stays as it is).
+  [[nodiscard]] NetSimOptions scale_options() const;
+  bool record = false;  ///< keep a Recording of every step
   std::uint64_t seed = 1;
   void validate() const;
 };

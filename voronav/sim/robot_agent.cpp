@@ -272,7 +272,7 @@ void RobotAgent::timers() {
     if (r_.path_deadline >= 0.0 && now_ + 1e-9 >= r_.path_deadline) select_path();
     if (r_.bridge_at >= 0.0 && now_ + 1e-9 >= r_.bridge_at) start_bridge();
     if (!is_source()) return;
-    if (route_.empty() && now_ - search_started_ >= opt().search_timeout_s &&
+    if (route_.empty() && now_ + 1e-9 >= search_deadline_ &&
         report_.search_attempts < opt().max_search_attempts)
       start_search();
     if (!route_.empty() && blocked_since_ >= 0.0 &&
@@ -400,23 +400,41 @@ bool RobotAgent::plan_walk(Vec2 target) {
   const auto& wg = scen().world.geometry();
   const auto a = wg.world_to_cell(r.pos), b = wg.world_to_cell(target);
   if (!a || !b) return false;
-  // Plan on a window of the world around both ends; unknown = free (optimistic).
+  // Plan on a window of the world around both ends; unknown = free (optimistic). When that
+  // fails (known walls close the window), plan once more on a window that also holds the whole
+  // local map (outside it everything is unknown, so that window is as good as the world).
   const int margin = static_cast<int>(std::ceil(10.0 / wg.resolution));
   Cell lo{std::max(0, std::min(a->x, b->x) - margin), std::max(0, std::min(a->y, b->y) - margin)};
   Cell hi{std::min(wg.width - 1, std::max(a->x, b->x) + margin),
           std::min(wg.height - 1, std::max(a->y, b->y) + margin)};
-  BinaryGrid win(GridGeometry{hi.x - lo.x + 1, hi.y - lo.y + 1, wg.resolution, {}}, 0);
-  for (int y = 0; y < win.height(); ++y)
-    for (int x = 0; x < win.width(); ++x)
-      win[Cell{x, y}] = r.map.at(Cell{x, y} + lo) == kOccupied ? 1 : 0;
-  const auto result = timed([&] {
-    BinaryGrid pg = planning::make_planning_grid(win, opt().robot_radius_m);
-    pg[*a - lo] = 0;
-    pg[*b - lo] = 0;
-    planning::AStarPlanner planner;
-    return planner.plan(pg, *a - lo, *b - lo);
-  });
-  report_.metrics.work += win.size() * 2 + result.expanded;
+  planning::PlanResult result;
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) {
+      if (!opt().walk_replan_whole_map) break;
+      const Cell mlo = r.map.offset();
+      const Cell mhi{mlo.x + r.map.grid().width() - 1, mlo.y + r.map.grid().height() - 1};
+      const Cell lo2{std::max(0, std::min(lo.x, mlo.x - 2)),
+                     std::max(0, std::min(lo.y, mlo.y - 2))};
+      const Cell hi2{std::min(wg.width - 1, std::max(hi.x, mhi.x + 2)),
+                     std::min(wg.height - 1, std::max(hi.y, mhi.y + 2))};
+      if (lo2 == lo && hi2 == hi) break;  // the first window was already that large
+      lo = lo2;
+      hi = hi2;
+    }
+    BinaryGrid win(GridGeometry{hi.x - lo.x + 1, hi.y - lo.y + 1, wg.resolution, {}}, 0);
+    for (int y = 0; y < win.height(); ++y)
+      for (int x = 0; x < win.width(); ++x)
+        win[Cell{x, y}] = r.map.at(Cell{x, y} + lo) == kOccupied ? 1 : 0;
+    result = timed([&] {
+      BinaryGrid pg = planning::make_planning_grid(win, opt().robot_radius_m);
+      pg[*a - lo] = 0;
+      pg[*b - lo] = 0;
+      planning::AStarPlanner planner;
+      return planner.plan(pg, *a - lo, *b - lo);
+    });
+    report_.metrics.work += win.size() * 2 + result.expanded;
+    if (result.ok()) break;
+  }
   if (!result.ok()) return false;
   r.waypoints.clear();
   for (std::size_t i = 1; i < result.path.size(); ++i)
@@ -440,7 +458,11 @@ bool RobotAgent::walk_blocked() const {
 void RobotAgent::start_search() {
   auto& s = r_;
   ++report_.search_attempts;
-  search_started_ = now_;
+  // Retry timeout: fixed, or longer the farther the destination (every hop that must bridge a
+  // gap costs bridge_wait_s plus a walk; see NetSimOptions::search_timeout_per_m).
+  search_deadline_ =
+      now_ + std::max(opt().search_timeout_s,
+                      opt().search_timeout_per_m * distance(s.pos, scen().destination));
   trail_ = {s.pos};
   const std::uint32_t num = ++search_num_;
   SearchMessage pseudo;
@@ -473,10 +495,13 @@ bool RobotAgent::try_continue() {
     start[i] = r.s_comb[i].cost < kUnreached ? r.s_comb[i].cost : kInf;
   // Within its own map a robot may also move straight between its own points when the move is
   // known free (it checks the cells itself; at most 6 m apart to bound the work).
+  // The source's start point (its position) is in its own map too (source_straight_start).
   const std::size_t own_end = r.s_na + own.size();
+  const std::size_t own_begin = is_source() && opt().source_straight_start ? 0 : r.s_na;
   std::size_t los_cells = 0;
   auto own_edge = [&](std::size_t i, std::size_t j) {
-    if (i < r.s_na || j < r.s_na || i >= own_end || j >= own_end) return false;
+    if (i < own_begin || j < own_begin || i >= own_end || j >= own_end) return false;
+    if (i < r.s_na && j < r.s_na) return false;
     const Vec2 a = r.s_comb[i].position, b = r.s_comb[j].position;
     if (distance(a, b) > 6.0) return false;
     los_cells += static_cast<std::size_t>(distance(a, b) / scen().world.resolution()) + 1;
@@ -490,7 +515,7 @@ bool RobotAgent::try_continue() {
     // The destination is not an open point: join it to the best reached own point it can be
     // driven to in a straight line through known free space.
     const std::size_t d = r.s_comb.size() - 1;
-    for (std::size_t i = r.s_na; i < d; ++i) {
+    for (std::size_t i = own_begin; i < d; ++i) {
       if (!std::isfinite(r.s_search.cost[i])) continue;
       const double c = r.s_search.cost[i] + distance(r.s_comb[i].position, dest);
       if (c < r.s_search.cost[d] && segment_known_free(r.s_comb[i].position, dest)) {
@@ -520,6 +545,9 @@ bool RobotAgent::dest_reached() const {
 
 void RobotAgent::on(const Header& h, const SearchMessage& m) {
   auto& r = r_;
+  if (is_source() && m.source == r.id && m.num == search_num_ && opt().search_activity_s > 0.0)
+    // A neighbour (re-)forwards the current Search: it is still spreading, wait for it.
+    search_deadline_ = std::max(search_deadline_, now_ + opt().search_activity_s);
   if (is_source() || m.source != source_id()) return;
   if (r.s_num != kNone && m.num < r.s_num) return;  // stale search
   if (r.s_num == m.num) {
@@ -563,7 +591,10 @@ void RobotAgent::process_search(RobotId sender, const SearchMessage& m, std::uin
   r.s_in = m;
   r.s_senders = {{sender, m.relays, 0, m.open_points.size()}};
   r.reforwards = 0;
-  if (r.walk != Walk::kDestination) r.walk = Walk::kIdle;  // stay committed
+  // A robot walking to the destination stays committed; one bridging a gap may keep walking
+  // (the new Search's points are tried as it senses, walk_progress).
+  const bool bridging = r.walk == Walk::kBridge && opt().keep_bridge_on_new_search;
+  if (r.walk != Walk::kDestination && !bridging) r.walk = Walk::kIdle;
   r.bridge_at = -1.0;
   r.got_paths.clear();
   r.path_deadline = -1.0;
@@ -574,7 +605,7 @@ void RobotAgent::process_search(RobotId sender, const SearchMessage& m, std::uin
     after_continue(hops);
     return;
   }
-  if (is_source()) return;
+  if (is_source() || bridging) return;
   // Cannot continue: walk over and sense the gap on the source's behalf (figure 18) when this
   // robot is closer to the destination than the sender's points.
   double d_sender = kInf;
@@ -620,7 +651,14 @@ void RobotAgent::after_continue(std::uint8_t hops) {
   // Walk toward the destination and sense it on the source's behalf (figure 18) when no radio
   // neighbour is closer to it (this robot is the frontier); otherwise forward the Search.
   bool frontier = true;
-  const double my_d = distance(r.pos, scen().destination);
+  double my_d = distance(r.pos, scen().destination);
+  if (opt().frontier_by_points) {
+    // As a receiver decides whether to bridge (process_search): a neighbour takes the Search on
+    // only when it is > 1 m closer to the destination than every point this robot sends.
+    for (const auto& p : points().open)
+      my_d = std::min(my_d, distance(p.position, scen().destination));
+    my_d -= 1.0;
+  }
   for (const auto& n : transport_.nearby(r.id))
     if (distance(n.position, scen().destination) < my_d) frontier = false;
   // The source also walks toward the destination itself from its second attempt on (as the

@@ -222,7 +222,7 @@ class RobotAgent {
   bool last_sense_changed_ = false;
   // Source only.
   std::uint32_t search_num_ = 0;
-  double search_started_ = 0.0;
+  double search_deadline_ = 0.0;  // retry the Search (Num + 1) when no route by then
   std::vector<network::VoronoiPoint> route_;
   std::size_t route_base_ = 0;
   std::vector<Vec2> trail_;     // source positions since its latest Search
