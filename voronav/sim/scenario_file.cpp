@@ -92,6 +92,14 @@ class Reader {
     if (!(v >= 0.0)) fail(n, what + ": expected a number >= 0, got " + n.Scalar());
     return v;
   }
+  [[nodiscard]] bool boolean(const YAML::Node& n, const std::string& what) const {
+    if (n.IsScalar()) {
+      const std::string v = n.Scalar();
+      if (v == "true") return true;
+      if (v == "false") return false;
+    }
+    fail(n, what + ": expected true or false, got '" + (n.IsScalar() ? n.Scalar() : "") + "'");
+  }
   [[nodiscard]] double probability(const YAML::Node& n, const std::string& what) const {
     const double v = number(n, what);
     if (!(v >= 0.0 && v <= 1.0))
@@ -158,10 +166,31 @@ OccupancyGrid load_world(const Reader& rd, const YAML::Node& n, const fs::path& 
 
 void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) {
   rd.keys(n, "options",
-          {"method", "sensing_range_m", "speed_mps", "robot_radius_m", "dt_s", "time_limit_s",
-           "radio", "points", "path_wait_s", "bridge_wait_s", "search_timeout_s",
-           "max_search_attempts", "link_timeout_s", "link_retries", "hop_limit", "repair_hops",
-           "collect_s", "repair_timeout_s", "seed"});
+          {"method",
+           "sensing_range_m",
+           "speed_mps",
+           "robot_radius_m",
+           "dt_s",
+           "time_limit_s",
+           "radio",
+           "points",
+           "path_wait_s",
+           "bridge_wait_s",
+           "search_timeout_s",
+           "max_search_attempts",
+           "link_timeout_s",
+           "link_retries",
+           "hop_limit",
+           "repair_hops",
+           "collect_s",
+           "repair_timeout_s",
+           "search_timeout_per_m",
+           "search_activity_s",
+           "keep_bridge_on_new_search",
+           "source_straight_start",
+           "frontier_by_points",
+           "walk_replan_whole_map",
+           "seed"});
   NetSimOptions& o = f.options;
   if (const auto m = n["method"]) {
     try {
@@ -195,6 +224,15 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   integer("repair_hops", o.repair_hops, 1, 255);
   pos("collect_s", o.collect_s);
   pos("repair_timeout_s", o.repair_timeout_s);
+  nonneg("search_timeout_per_m", o.search_timeout_per_m);
+  nonneg("search_activity_s", o.search_activity_s);
+  auto flag = [&](const char* key, bool& v) {
+    if (const auto m = n[key]) v = rd.boolean(m, std::string("options.") + key);
+  };
+  flag("keep_bridge_on_new_search", o.keep_bridge_on_new_search);
+  flag("source_straight_start", o.source_straight_start);
+  flag("frontier_by_points", o.frontier_by_points);
+  flag("walk_replan_whole_map", o.walk_replan_whole_map);
   if (const auto m = n["seed"]) o.seed = rd.integer<std::uint64_t>(m, "options.seed", 0, kMaxU64);
   if (const auto r = n["radio"]) {
     rd.keys(r, "options.radio",
@@ -416,6 +454,12 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
       << "  repair_hops: " << o.repair_hops << "\n"
       << "  collect_s: " << fmt(o.collect_s) << "\n"
       << "  repair_timeout_s: " << fmt(o.repair_timeout_s) << "\n"
+      << "  search_timeout_per_m: " << fmt(o.search_timeout_per_m) << "\n"
+      << "  search_activity_s: " << fmt(o.search_activity_s) << "\n"
+      << "  keep_bridge_on_new_search: " << (o.keep_bridge_on_new_search ? "true" : "false") << "\n"
+      << "  source_straight_start: " << (o.source_straight_start ? "true" : "false") << "\n"
+      << "  frontier_by_points: " << (o.frontier_by_points ? "true" : "false") << "\n"
+      << "  walk_replan_whole_map: " << (o.walk_replan_whole_map ? "true" : "false") << "\n"
       << "  seed: " << o.seed << "\n";
   std::ofstream f(file);
   if (!f) throw Error(path, 0, "cannot write the scenario file");

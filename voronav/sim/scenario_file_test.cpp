@@ -56,6 +56,12 @@ void expect_same_options(const NetSimOptions& a, const NetSimOptions& b) {
   EXPECT_EQ(a.repair_hops, b.repair_hops);
   EXPECT_EQ(a.collect_s, b.collect_s);
   EXPECT_EQ(a.repair_timeout_s, b.repair_timeout_s);
+  EXPECT_EQ(a.search_timeout_per_m, b.search_timeout_per_m);
+  EXPECT_EQ(a.search_activity_s, b.search_activity_s);
+  EXPECT_EQ(a.keep_bridge_on_new_search, b.keep_bridge_on_new_search);
+  EXPECT_EQ(a.source_straight_start, b.source_straight_start);
+  EXPECT_EQ(a.frontier_by_points, b.frontier_by_points);
+  EXPECT_EQ(a.walk_replan_whole_map, b.walk_replan_whole_map);
   EXPECT_EQ(a.seed, b.seed);
 }
 
@@ -92,6 +98,12 @@ TEST(ScenarioFile, PaperRunWithEveryOptionSetRoundTripsExactly) {
   o.repair_hops = 3;
   o.collect_s = 2.25;
   o.repair_timeout_s = 9.5;
+  o.search_timeout_per_m = 2.75;
+  o.search_activity_s = 31.5;
+  o.keep_bridge_on_new_search = true;
+  o.source_straight_start = true;
+  o.frontier_by_points = true;
+  o.walk_replan_whole_map = true;
   o.seed = 42;
   const fs::path path = d / "paper.yaml";
   save_netsim_scenario(path.string(), sc, o);
