@@ -1,0 +1,55 @@
+#include "voronav/dds/internal/netsim_json.hpp"
+
+namespace voronav::dds::internal {
+
+using nlohmann::json;
+
+json robot_metrics_json(const sim::RobotMetrics& m) {
+  json types = json::array();
+  for (const auto& t : m.sent_by_type)
+    types.push_back({t.messages, t.bytes});
+  return {{"sent_by_type", types},      {"work", m.work},
+          {"cpu_s", m.cpu_s},           {"travel_m", m.travel_m},
+          {"sent_bytes", m.sent_bytes}, {"sent_messages", m.sent_messages}};
+}
+sim::RobotMetrics robot_metrics_from(const json& j) {
+  sim::RobotMetrics m;
+  m.work = j.at("work").get<std::uint64_t>();
+  m.cpu_s = j.at("cpu_s").get<double>();
+  m.travel_m = j.at("travel_m").get<double>();
+  m.sent_bytes = j.at("sent_bytes").get<std::uint64_t>();
+  m.sent_messages = j.at("sent_messages").get<std::uint64_t>();
+  const auto& types = j.at("sent_by_type");
+  for (std::size_t t = 0; t < m.sent_by_type.size() && t < types.size(); ++t) {
+    m.sent_by_type[t].messages = types[t].at(0).get<std::uint64_t>();
+    m.sent_by_type[t].bytes = types[t].at(1).get<std::uint64_t>();
+  }
+  return m;
+}
+
+json agent_report_json(const sim::AgentReport& a) {
+  return {{"metrics", robot_metrics_json(a.metrics)},
+          {"search_attempts", a.search_attempts},
+          {"repairs", a.repairs},
+          {"replans", a.replans},
+          {"corrupt_packets", a.corrupt_packets},
+          {"arrived", a.arrived},
+          {"route_time_s", a.route_time_s},
+          {"arrival_time_s", a.arrival_time_s},
+          {"route_length_m", a.route_length_m}};
+}
+sim::AgentReport agent_report_from(const json& j) {
+  sim::AgentReport a;
+  a.metrics = robot_metrics_from(j.at("metrics"));
+  a.search_attempts = j.at("search_attempts").get<int>();
+  a.repairs = j.at("repairs").get<int>();
+  a.replans = j.at("replans").get<int>();
+  a.corrupt_packets = j.at("corrupt_packets").get<std::uint64_t>();
+  a.arrived = j.at("arrived").get<bool>();
+  a.route_time_s = j.at("route_time_s").get<double>();
+  a.arrival_time_s = j.at("arrival_time_s").get<double>();
+  a.route_length_m = j.at("route_length_m").get<double>();
+  return a;
+}
+
+}  // namespace voronav::dds::internal
