@@ -139,7 +139,6 @@ void RobotAgent::start() {
 
 void RobotAgent::flush() {
   transport_.update_position(r_.id, r_.pos);  // every step: a robot process publishes its pose
-  position_held_ = false;
   auto held = std::move(held_);
   held_.clear();
   for (auto& h : held)
@@ -329,7 +328,6 @@ void RobotAgent::move(double now_s) {
   }
   report_.metrics.travel_m += moved;
   if (is_source() && moved > 0.0) trail_.push_back(r.pos);
-  position_held_ = true;
   do_sense();
   const bool changed = last_sense_changed_;
   if (is_source() && r.wp >= r.waypoints.size() && distance(r.pos, scen().destination) < 0.35) {

@@ -217,7 +217,6 @@ class RobotAgent {
   std::vector<Outgoing> outbox_;
   bool holding_ = false;  // inside move(): sends and the position wait for flush()
   std::vector<Held> held_;
-  bool position_held_ = false;
   double now_ = 0.0;
   bool last_sense_changed_ = false;
   // Source only.
