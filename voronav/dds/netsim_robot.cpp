@@ -93,8 +93,6 @@ int run_robot_process(const RobotProcessOptions& o) {
   const auto file = sim::load_netsim_scenario(o.scenario_path);
   const auto& sc = file.scenario;
   const auto& opts = file.options;
-  sc.validate();
-  opts.validate();
   const auto n = static_cast<std::uint32_t>(sc.robots.size());
   if (o.id >= n)
     throw Error("--id", 0,

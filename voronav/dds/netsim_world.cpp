@@ -51,8 +51,6 @@ int run_world_process(const WorldProcessOptions& o) {
   const auto file = sim::load_netsim_scenario(o.scenario_path);
   const auto& sc = file.scenario;
   const auto& opts = file.options;
-  sc.validate();
-  opts.validate();
   const auto n = static_cast<std::uint32_t>(sc.robots.size());
   const double wall0 = steady_s();
   dds_entity_t domain = 0;
