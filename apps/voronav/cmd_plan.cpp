@@ -51,7 +51,8 @@ void run(const PlanArgs& a) {
       if (ras != nullptr) {
         save_ras_picture(pic, *ras, out);
       } else {
-        save_plan_picture(pic, out);
+        save_plan_picture(pic, out, std::string(planner->name()),
+                          ctx.map.format == io::MapFormat::kMovingAi ? "cells" : "m");
       }
     }
   }
