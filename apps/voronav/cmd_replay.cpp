@@ -88,7 +88,9 @@ void setup(CLI::App& app) {
   rec->excludes(ex);
   rec->excludes(map);
   ex->excludes(map);
-  cmd->add_option("--out", args->out, "Output directory; the page is DIR/index.html")->required();
+  cmd->add_option("--out", args->out, "Output directory; the page is DIR/index.html")
+      ->required()
+      ->check(output_dir());
   cmd->add_flag("--json", args->json,
                 "JSON output: index_html, recording, bytes, robots, messages, layers, plots, "
                 "start_s, end_s");
