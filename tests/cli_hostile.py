@@ -220,6 +220,11 @@ CASES = [
 ]
 
 
+# Cases that take ~1.5 s in release on a loaded 2-core machine get more headroom (no hang is
+# anywhere near it: before issue 17 they ran out of memory or for minutes).
+SLOW = {"schedule_1000_identical": 3}
+
+
 def main():
     failures = []
     with tempfile.TemporaryDirectory() as top:
@@ -235,11 +240,12 @@ def main():
                     f.write(content.encode() if isinstance(content, str) else content)
             before = set(os.listdir(d))
             argv = [a.replace("{d}", d) for a in args]
-            code, out, err, secs, rss = run(argv, d)
+            limit = TIME_LIMIT * SLOW.get(name, 1)
+            code, out, err, secs, rss = run(argv, d, timeout=limit)
             text = err + out
             problems = []
             if code is None:
-                problems.append(f"no exit within {TIME_LIMIT:g} s")
+                problems.append(f"no exit within {limit:g} s")
             elif code != expect:
                 problems.append(f"exit {code}, expected {expect}")
             problems += [f"missing '{m}'" for m in must if m not in text]
@@ -269,7 +275,7 @@ def interrupt_check():
         with open(os.path.join(d, "m.pgm"), "wb") as f:
             f.write(PGM_10)
         env = dict(os.environ, VORONAV_PROGRESS="1")
-        p = subprocess.Popen([BIN, "map", "--map", "m.pgm", "--poses", "1000000"], cwd=d,
+        p = subprocess.Popen([BIN, "map", "--map", "m.pgm", "--poses", "1000000", "--clearance", "0"], cwd=d,
                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env, text=True)
         time.sleep(6.5)
         p.send_signal(signal.SIGINT)
