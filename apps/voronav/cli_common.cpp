@@ -91,7 +91,7 @@ CLI::Validator output_dir() {
         if (text.empty()) return "expected a folder name";
         std::error_code ec;
         if (fs::exists(text, ec) && !fs::is_directory(text, ec))
-          return "'" + text + "' is a file, expected a folder";
+          return "'" + text + "' is a file, expected a directory";
         return check_folder(text);
       },
       "FOLDER", "");
