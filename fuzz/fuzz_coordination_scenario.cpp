@@ -19,7 +19,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
       s = coordination::load_scenario(path);
     } catch (const Error& e) {
-      if (e.source() != path.string()) fuzz::finding(std::string("error not naming the file: ") + e.what());
+      if (e.source() != path.string())
+        fuzz::finding(std::string("error not naming the file: ") + e.what());
       return;
     }
     if (s.robots.size() <= 16) (void)coordination::plan_agents(s);

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "fuzz_util.hpp"
-#include "voronav/network/messages.hpp"
 #include "seed_messages.hpp"
+#include "voronav/network/messages.hpp"
 #include "voronav_dds.h"
 
 namespace {

@@ -4,8 +4,8 @@
 #include "voronav/report/recording.hpp"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  voronav::fuzz::write_seeds(
-      std::vector<std::string>{voronav::report::to_json(voronav::report::make_example_recording())});
+  voronav::fuzz::write_seeds(std::vector<std::string>{
+      voronav::report::to_json(voronav::report::make_example_recording())});
   return 0;
 }
 

@@ -6,7 +6,9 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace voronav;
   static const bool once = [] {
-    (void)fuzz::put("map.pgm", std::string_view("P5\n4 3\n255\n\xfe\xfe\x00\xfe\xfe\xcd\xfe\x00\xfe\xfe\xfe\xfe", 23));
+    (void)fuzz::put(
+        "map.pgm",
+        std::string_view("P5\n4 3\n255\n\xfe\xfe\x00\xfe\xfe\xcd\xfe\x00\xfe\xfe\xfe\xfe", 23));
     return true;
   }();
   (void)once;

@@ -22,8 +22,8 @@ namespace voronav::fuzz {
 /// The scratch folder of this process (created once, removed at exit).
 inline const std::filesystem::path& scratch() {
   static const std::filesystem::path dir = [] {
-    auto d = std::filesystem::temp_directory_path() /
-             ("voronav_fuzz_" + std::to_string(::getpid()));
+    auto d =
+        std::filesystem::temp_directory_path() / ("voronav_fuzz_" + std::to_string(::getpid()));
     std::filesystem::create_directories(d);
     std::atexit([] {
       std::error_code ec;

@@ -37,9 +37,9 @@ std::string read_file_bounded(const std::filesystem::path& path, std::size_t lim
     const auto got = static_cast<std::size_t>(in.gcount());
     if (got == 0) break;
     if (data.size() + got > limit)
-      throw Error(path.string(), 0,
-                  "the " + what + " is over the limit of " + mib(limit) +
-                      " (stopped reading there)");
+      throw Error(
+          path.string(), 0,
+          "the " + what + " is over the limit of " + mib(limit) + " (stopped reading there)");
     data.append(buf, got);
   }
   if (in.bad()) throw Error(path.string(), 0, "read error in the " + what);
