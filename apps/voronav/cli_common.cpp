@@ -28,8 +28,7 @@ std::string short_number(double v) {
   return os.str();
 }
 
-CLI::Validator number_validator(const std::string& desc,
-                                std::function<bool(double)> ok) {
+CLI::Validator number_validator(const std::string& desc, std::function<bool(double)> ok) {
   return CLI::Validator(
       [desc, ok](std::string& text) -> std::string {
         double v = 0.0;
@@ -133,8 +132,8 @@ void watch_long_run(const std::string& command) {
     const auto t0 = std::chrono::steady_clock::now();
     for (int s = 5;; s += 10) {
       std::this_thread::sleep_until(t0 + std::chrono::seconds(s));
-      const std::string line =
-          "voronav " + command + ": still running after " + std::to_string(s) + " s (Ctrl-C stops)\n";
+      const std::string line = "voronav " + command + ": still running after " + std::to_string(s) +
+                               " s (Ctrl-C stops)\n";
       const ssize_t n = ::write(STDERR_FILENO, line.data(), line.size());
       (void)n;
     }

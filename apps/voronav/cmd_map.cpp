@@ -74,8 +74,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--clearance", args->clearance, "Poses keep at least this from obstacles [m]")
       ->check(non_negative())
       ->capture_default_str();
-  cmd->add_option("--noise", args->noise, "Laser range noise sigma [m]")
-      ->check(non_negative());
+  cmd->add_option("--noise", args->noise, "Laser range noise sigma [m]")->check(non_negative());
   cmd->add_option("--seed", args->seed, "Random seed (poses, noise)")
       ->check(non_negative())
       ->capture_default_str();

@@ -80,7 +80,8 @@ Scenario load_scenario(const fs::path& path) {
   try {
     if (root["at_start"])
       s.map_options.at_start = parse_at_start(text(root["at_start"], src, "at_start"));
-    if (root["at_goal"]) s.map_options.at_goal = parse_at_goal(text(root["at_goal"], src, "at_goal"));
+    if (root["at_goal"])
+      s.map_options.at_goal = parse_at_goal(text(root["at_goal"], src, "at_goal"));
   } catch (const Error& e) {
     throw Error(src, 0, e.source() + ": " + e.reason());
   }

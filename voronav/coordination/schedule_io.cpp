@@ -192,8 +192,7 @@ void write_schedule(const std::filesystem::path& path, const Schedule& s) {
 }
 
 Schedule read_schedule(const std::filesystem::path& path) {
-  return parse_schedule(read_file_bounded(path, kMaxTextFileBytes, "schedule file"),
-                        path.string());
+  return parse_schedule(read_file_bounded(path, kMaxTextFileBytes, "schedule file"), path.string());
 }
 
 }  // namespace voronav::coordination

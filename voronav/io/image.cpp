@@ -149,12 +149,12 @@ GrayImage read_png(const std::filesystem::path& path) {
   const auto pixels = static_cast<unsigned long long>(png.width) * png.height;
   if (pixels > kMaxPixels || pixels / 8 > 1100ULL * file.size() + 4096) {
     png_image_free(&png);
-    throw Error(path.string(), 0,
-                "PNG: " + std::to_string(png.width) + "x" + std::to_string(png.height) +
-                    (pixels > kMaxPixels ? " is over the limit of " + std::to_string(kMaxPixels) +
-                                               " pixels"
-                                         : " pixels cannot be stored in a file of " +
-                                               std::to_string(file.size()) + " bytes"));
+    throw Error(
+        path.string(), 0,
+        "PNG: " + std::to_string(png.width) + "x" + std::to_string(png.height) +
+            (pixels > kMaxPixels ? " is over the limit of " + std::to_string(kMaxPixels) + " pixels"
+                                 : " pixels cannot be stored in a file of " +
+                                       std::to_string(file.size()) + " bytes"));
   }
   png.format = PNG_FORMAT_RGBA;
   std::vector<std::uint8_t> rgba(PNG_IMAGE_SIZE(png));

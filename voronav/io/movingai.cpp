@@ -75,12 +75,12 @@ OccupancyGrid load_movingai_map(const fs::path& path) {
                 "height and width must be given and in 1.." + std::to_string(kMaxSide));
   // The rows must be in the file before the grid is allocated.
   if (static_cast<std::size_t>(height) * static_cast<std::size_t>(width) > data.size())
-    throw Error(path.string(), n,
-                "truncated file: " + std::to_string(width) + "x" + std::to_string(height) +
-                    " map rows need " +
-                    std::to_string(static_cast<std::size_t>(height) *
-                                   static_cast<std::size_t>(width)) +
-                    " characters, the file has " + std::to_string(data.size()) + " bytes");
+    throw Error(
+        path.string(), n,
+        "truncated file: " + std::to_string(width) + "x" + std::to_string(height) +
+            " map rows need " +
+            std::to_string(static_cast<std::size_t>(height) * static_cast<std::size_t>(width)) +
+            " characters, the file has " + std::to_string(data.size()) + " bytes");
   OccupancyGrid grid(width, height, kFree);
   for (int row = 0; row < height; ++row) {
     next(("map row " + std::to_string(row + 1) + " of " + std::to_string(height)).c_str());
