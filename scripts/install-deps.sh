@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages voronav needs, only those that are missing (apt-get, as root;
-# uses sudo when not root). Usage: scripts/install-deps.sh [--tests]  (--tests adds the browser test's)
+# uses sudo when not root). Usage: scripts/install-deps.sh [--tests] [--fuzz]  (--tests adds the
+# browser test's; --fuzz adds clang and its libFuzzer runtime for scripts/fuzz.sh)
 set -euo pipefail
 pkgs=(cmake ninja-build g++ pkg-config python3 libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
       libfmt-dev libspdlog-dev libboost-dev libcairo2-dev libpng-dev libtbb-dev
@@ -10,6 +11,8 @@ for arg in "$@"; do
     # The browser test of the replay page: Debian's Chromium, driven by Playwright from npm.
     --tests) pkgs+=(chromium)
              command -v npm >/dev/null || pkgs+=(nodejs npm) ;;
+    # libFuzzer for Debian's clang 14 is in libclang-rt-14-dev (libclang_rt.fuzzer-x86_64.a).
+    --fuzz) pkgs+=(clang libclang-rt-14-dev) ;;
     *) echo "install-deps.sh: unknown option '$arg'" >&2; exit 2 ;;
   esac
 done

@@ -1,13 +1,144 @@
 #include "cli_common.hpp"
 
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <thread>
+
 #include <cmath>
 #include <iostream>
 #include <sstream>
+#include <system_error>
 
 #include "voronav/core/error.hpp"
 #include "voronav/io/movingai.hpp"
 
 namespace voronav::cli {
+
+namespace {
+
+/// Shortest form that reads back, e.g. 1e+18 rather than 1000000000000000000.000000.
+std::string short_number(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+CLI::Validator number_validator(const std::string& desc, std::function<bool(double)> ok) {
+  return CLI::Validator(
+      [desc, ok](std::string& text) -> std::string {
+        double v = 0.0;
+        std::size_t used = 0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != text.size() || !std::isfinite(v) || !ok(v))
+          return "expected " + desc + ", got '" + text + "'";
+        return {};
+      },
+      desc, "");
+}
+
+/// The nearest existing ancestor of `p` (p itself when it exists).
+std::filesystem::path existing_ancestor(std::filesystem::path p) {
+  std::error_code ec;
+  p = std::filesystem::absolute(p, ec);
+  while (!p.empty() && !std::filesystem::exists(p, ec) && p.has_relative_path())
+    p = p.parent_path();
+  return p;
+}
+
+std::string check_folder(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path abs = fs::weakly_canonical(fs::absolute(dir, ec), ec);
+  if (!abs.empty() && abs == abs.root_path())
+    return "refusing to write into the filesystem root '" + abs.string() + "'; give a folder";
+  const fs::path anc = existing_ancestor(dir);
+  if (anc.empty() || !fs::is_directory(anc, ec))
+    return "'" + anc.string() + "' is not a folder, so '" + dir.string() + "' cannot be created";
+  if (::access(anc.c_str(), W_OK | X_OK) != 0)
+    return "folder '" + anc.string() + "' is not writable";
+  return {};
+}
+
+}  // namespace
+
+CLI::Validator non_negative() {
+  return number_validator("a finite number >= 0", [](double v) { return v >= 0.0; });
+}
+
+CLI::Validator positive() {
+  return number_validator("a finite number > 0", [](double v) { return v > 0.0; });
+}
+
+CLI::Validator finite_range(double lo, double hi) {
+  return number_validator("a number in " + short_number(lo) + ".." + short_number(hi),
+                          [lo, hi](double v) { return v >= lo && v <= hi; });
+}
+
+CLI::Validator output_dir() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        namespace fs = std::filesystem;
+        if (text.empty()) return "expected a folder name";
+        std::error_code ec;
+        if (fs::exists(text, ec) && !fs::is_directory(text, ec))
+          return "'" + text + "' is a file, expected a directory";
+        return check_folder(text);
+      },
+      "FOLDER", "");
+}
+
+CLI::Validator output_file() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        namespace fs = std::filesystem;
+        if (text.empty()) return "expected a file name";
+        std::error_code ec;
+        if (fs::is_directory(text, ec))
+          return "'" + text + "' is a folder, expected a file name (e.g. " +
+                 (fs::path(text) / "scenario.yaml").string() + ")";
+        fs::path parent = fs::path(text).parent_path();
+        if (parent.empty()) parent = ".";
+        return check_folder(parent);
+      },
+      "FILE", "");
+}
+
+namespace {
+std::string g_interrupt_line;  // written once before the handler is installed
+
+extern "C" void on_interrupt(int) {
+  const ssize_t n = ::write(STDERR_FILENO, g_interrupt_line.data(), g_interrupt_line.size());
+  (void)n;
+  std::_Exit(130);
+}
+}  // namespace
+
+void watch_long_run(const std::string& command) {
+  g_interrupt_line = "\nvoronav " + command + ": interrupted\n";
+  std::signal(SIGINT, on_interrupt);
+  const char* env = std::getenv("VORONAV_PROGRESS");
+  const bool forced = env != nullptr && std::strcmp(env, "1") == 0;
+  if (!forced && !::isatty(STDERR_FILENO)) return;
+  std::thread([command] {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int s = 5;; s += 10) {
+      std::this_thread::sleep_until(t0 + std::chrono::seconds(s));
+      const std::string line = "voronav " + command + ": still running after " + std::to_string(s) +
+                               " s (Ctrl-C stops)\n";
+      const ssize_t n = ::write(STDERR_FILENO, line.data(), line.size());
+      (void)n;
+    }
+  }).detach();
+}
 
 Vec2 parse_point(const std::string& text, const std::string& option) {
   const auto comma = text.find(',');

@@ -3,6 +3,7 @@
 // grid cells, and writing JSON.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -12,6 +13,27 @@
 #include "voronav/io/map_loader.hpp"
 
 namespace voronav::cli {
+
+/// Number validators for CLI11 options. Unlike CLI::NonNegativeNumber / PositiveNumber they
+/// refuse nan and inf and state the range readably (no 309-digit largest double), e.g.
+/// "--radius: expected a finite number >= 0, got '-1'".
+[[nodiscard]] CLI::Validator non_negative();
+[[nodiscard]] CLI::Validator positive();
+/// A finite number in [lo, hi].
+[[nodiscard]] CLI::Validator finite_range(double lo, double hi);
+
+/// Output validators, checked when the options are parsed (before anything is computed or
+/// written). output_dir(): a folder that is not the filesystem root, not an existing file, and
+/// whose nearest existing ancestor is a writable folder. output_file(): a file path that is not an
+/// existing folder, and whose folder is not the filesystem root and exists or can be created.
+[[nodiscard]] CLI::Validator output_dir();
+[[nodiscard]] CLI::Validator output_file();
+
+/// Long runs: Ctrl-C (SIGINT) ends the process at once with "voronav <command>: interrupted"
+/// and exit code 130; and when stderr is a terminal (or VORONAV_PROGRESS=1 is set), a line
+/// "voronav <command>: still running after N s (Ctrl-C stops)" every 10 s from 5 s on. A heartbeat,
+/// not a percentage: the commands differ too much to report finer progress from one place.
+void watch_long_run(const std::string& command);
 
 /// Parses "X,Y" (finite numbers); throws voronav::Error naming `option` otherwise.
 [[nodiscard]] Vec2 parse_point(const std::string& text, const std::string& option);

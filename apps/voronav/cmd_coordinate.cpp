@@ -254,18 +254,23 @@ void setup(CLI::App& app) {
   cmd->add_option("--map", a->map, "MAPF map (Moving AI .map)")->check(CLI::ExistingFile);
   cmd->add_option("--scen", a->scen, "MAPF .scen (first K rows = K robots)")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--agents", a->agents, "K: number of .scen rows used")->capture_default_str();
+  cmd->add_option("--agents", a->agents, "K: number of .scen rows used")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
   cmd->add_option("--radius", a->radius, "robot radius for MAPF input [cells]")
+      ->check(positive())
       ->capture_default_str();
   cmd->add_option("--search", a->search, "none | exhaustive | edf | ga")->capture_default_str();
   cmd->add_flag("--no-reduction", a->no_reduction,
                 "search all robots, not only the EDF urgent group");
-  cmd->add_option("--seed", a->seed, "GA seed")->capture_default_str();
+  cmd->add_option("--seed", a->seed, "GA seed")->check(non_negative())->capture_default_str();
   cmd->add_option("--at-start", a->at_start, "wait (default) | appear");
   cmd->add_option("--at-goal", a->at_goal, "stay (default) | leave");
-  cmd->add_option("--node-spacing", a->node_spacing, "path node spacing [m] (0 = automatic)");
+  cmd->add_option("--node-spacing", a->node_spacing, "path node spacing [m] (0 = automatic)")
+      ->check(non_negative());
   cmd->add_flag("--json", a->json, "JSON output");
-  cmd->add_option("--out", a->out, "folder for schedule.json/.yaml and pictures");
+  cmd->add_option("--out", a->out, "folder for schedule.json/.yaml and pictures")
+      ->check(output_dir());
   cmd->callback([a] { run(*a); });
 }
 

@@ -45,7 +45,7 @@ void setup_echo(CLI::App& app) {
   cmd->add_option("--id", o.id, "This robot's id (0..peers-1)")->required();
   cmd->add_option("--peers", o.peers, "Number of robots taking part (ids 0..peers-1)")->required();
   cmd->add_option("--rounds", o.rounds, "Broadcasts (and directed messages) to send")
-      ->check(CLI::PositiveNumber)
+      ->check(positive())
       ->capture_default_str();
   cmd->add_option("--interval", o.interval_s, "Pause between rounds [s]")->capture_default_str();
   cmd->add_option("--payload-bytes", o.payload_bytes, "Size of each payload [bytes] (>= 16)")
@@ -63,7 +63,7 @@ void setup_echo(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--partition", o.partition, "DDS partition")->capture_default_str();
   cmd->add_option("--history-depth", o.history_depth, "Keep-last depth per sender")
-      ->check(CLI::PositiveNumber)
+      ->check(positive())
       ->capture_default_str();
   cmd->add_option("--startup-timeout", o.startup_timeout_s, "Wait for the peers at most [s]")
       ->capture_default_str();
@@ -120,7 +120,7 @@ void setup_selftest(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed", o.seed, "Seed of the loss injection")->capture_default_str();
   cmd->add_option("--rounds", o.rounds, "Broadcasts (and directed messages) per robot")
-      ->check(CLI::PositiveNumber)
+      ->check(positive())
       ->capture_default_str();
   cmd->add_option("--interval", o.interval_s, "Pause between rounds [s]")->capture_default_str();
   cmd->add_option("--payload-bytes", o.payload_bytes, "Payload size [bytes] (>= 16)")

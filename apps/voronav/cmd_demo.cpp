@@ -521,7 +521,7 @@ void setup(CLI::App& app) {
       "demo",
       "Run the main capabilities on a bundled floor plan; pictures, summary.json, index.html");
   auto args = std::make_shared<DemoArgs>();
-  cmd->add_option("--out", args->out, "Output folder")->capture_default_str();
+  cmd->add_option("--out", args->out, "Output folder")->check(output_dir())->capture_default_str();
   cmd->add_option("--data", args->data, "Bundled data folder (default: the source tree's data/)");
   cmd->add_option("--floorplan", args->floorplan,
                   "Floor plan of data/floorplans (e.g. lab_ipa, office_b, Freiburg52_scan)")

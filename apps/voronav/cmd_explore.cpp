@@ -150,20 +150,23 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--method", args->method, "tree | frontier | coordinated")->capture_default_str();
   cmd->add_option("--time", args->time, "Simulated time limit [s]")
-      ->check(CLI::PositiveNumber)
+      ->check(finite_range(1e-3, 1e6))
       ->capture_default_str();
   cmd->add_option("--tree-start", args->tree_start,
                   "tree: seconds of reactive search before the first Voronoi tree")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Random seed (start spot, random driving)")
+      ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--start", args->start,
                   "Team start X,Y in world metres (default: a seeded free spot; (2,2) for paper)");
   cmd->add_option("--stop-at", args->stop_at,
-                  "Stop when the coverage reaches this fraction (default: run the full time)");
+                  "Stop when the coverage reaches this fraction (default: run the full time)")
+      ->check(finite_range(0.0, 1.0));
   cmd->add_option("--out", args->out,
-                  "Folder for exploration.json (with the recording), explore.png and tree.png");
+                  "Folder for exploration.json (with the recording), explore.png and tree.png")
+      ->check(output_dir());
   cmd->add_option("--picture-px", args->picture_px, "Larger side of the pictures [px]")
       ->check(CLI::Range(100, 4000))
       ->capture_default_str();

@@ -70,13 +70,14 @@ void setup(CLI::App& app) {
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   cmd->add_option("--range", args->range, "Maximum range [m] (0 = 10 m laser, 5 m sonar)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative());
   cmd->add_option("--clearance", args->clearance, "Poses keep at least this from obstacles [m]")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative())
       ->capture_default_str();
-  cmd->add_option("--noise", args->noise, "Laser range noise sigma [m]")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--seed", args->seed, "Random seed (poses, noise)")->capture_default_str();
+  cmd->add_option("--noise", args->noise, "Laser range noise sigma [m]")->check(non_negative());
+  cmd->add_option("--seed", args->seed, "Random seed (poses, noise)")
+      ->check(non_negative())
+      ->capture_default_str();
   cmd->add_option("--png", args->png, "Picture of the built map");
   cmd->add_flag("--json", args->json, "JSON output: agreement, observed (fractions 0..1)");
   cmd->callback([args] { run(*args); });

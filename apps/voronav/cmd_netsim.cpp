@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cli_common.hpp"
 #include "command.hpp"
 #include "recordings.hpp"
 #include "voronav/core/error.hpp"
@@ -333,19 +334,23 @@ void setup(CLI::App& app) {
                 "robot plus a world process, Cyclone DDS)")
       ->capture_default_str();
   c->add_option("--kill-robot", args->kill_robot,
-                "dds: fault injection, this robot's process dies after --kill-at-step");
+                "dds: fault injection, this robot's process dies after --kill-at-step")
+      ->check(non_negative());
   c->add_option("--kill-at-step", args->kill_at_step, "dds: the step after which it dies");
   c->add_option("--world-restart-at-step", args->world_restart_at_step,
                 "dds: the world process dies after this step and a new one resumes the run");
   c->add_option("--dds-timeout", args->dds_timeout_s, "dds: limit for one run [s]")
       ->capture_default_str();
-  auto* seed = c->add_option("--seed", args->seed, "world/placement seed (a file: options.seed)");
+  auto* seed = c->add_option("--seed", args->seed, "world/placement seed (a file: options.seed)")
+                   ->check(non_negative());
   auto* loss = c->add_option("--loss", args->loss, "radio message loss probability");
   c->add_option("--write-scenario", args->write_scenario,
                 "write --scenario 1..4 --run K (or the given file) as a scenario file naming "
-                "--method (decentralized for both) and exit");
-  c->add_option("--out", args->out, "directory for per-run JSON");
-  c->add_option("--plots", args->plots, "directory for per-run bar charts (PNG)");
+                "--method (decentralized for both) and exit")
+      ->check(output_file());
+  c->add_option("--out", args->out, "directory for per-run JSON")->check(output_dir());
+  c->add_option("--plots", args->plots, "directory for per-run bar charts (PNG)")
+      ->check(output_dir());
   c->add_flag("--json", args->json, "machine-readable output");
   c->callback([args, method, runs, seed, loss] {
     args->method_given = method->count() > 0;

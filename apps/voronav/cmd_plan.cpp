@@ -117,7 +117,7 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--radius", args->radius,
                   "Robot radius [m]: cells closer than this to an obstacle are blocked")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative())
       ->capture_default_str();
   cmd->add_flag("--cells", args->cells,
                 "Read --start/--goal as grid cells (row 0 at the bottom) for ROS/image maps");

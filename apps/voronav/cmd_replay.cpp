@@ -33,23 +33,23 @@ void run(const ReplayArgs& a) {
   std::error_code ec;
   if (fs::exists(a.out, ec) && !fs::is_directory(a.out, ec))
     throw Error(a.out.string(), 0, "--out must be a directory, and this is a file");
+  // The inputs are read before the output folder is made: a refused input leaves nothing behind.
+  report::Recording rec;
+  fs::path recording_file = a.recording;
+  if (!a.recording.empty()) rec = report::load_recording(a.recording.string());
+  if (!a.map.empty()) rec.map = io::load_map(a.map).grid;
   fs::create_directories(a.out, ec);
   if (ec) throw Error(a.out.string(), 0, "cannot create the directory: " + ec.message());
 
-  report::Recording rec;
-  fs::path recording_file = a.recording;
   if (a.example) {
     rec = report::make_example_recording();
     recording_file = a.out / "recording.json";
     report::save_recording(rec, recording_file.string());
   } else if (!a.map.empty()) {
-    rec.map = io::load_map(a.map).grid;
     rec.title = "Map " + a.map.filename().string();
     rec.description = "The occupancy grid of " + a.map.string() + " (no recorded run).";
     recording_file = a.out / "recording.json";
     report::save_recording(rec, recording_file.string());
-  } else {
-    rec = report::load_recording(a.recording.string());
   }
   const std::string page = report::write_replay_html(rec, (a.out / "index.html").string());
   const auto bytes = fs::file_size(page);
@@ -88,7 +88,9 @@ void setup(CLI::App& app) {
   rec->excludes(ex);
   rec->excludes(map);
   ex->excludes(map);
-  cmd->add_option("--out", args->out, "Output directory; the page is DIR/index.html")->required();
+  cmd->add_option("--out", args->out, "Output directory; the page is DIR/index.html")
+      ->required()
+      ->check(output_dir());
   cmd->add_flag("--json", args->json,
                 "JSON output: index_html, recording, bytes, robots, messages, layers, plots, "
                 "start_s, end_s");

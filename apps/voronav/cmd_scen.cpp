@@ -95,7 +95,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--tolerance", args->tolerance,
                   "Allowed |found - optimal| in cells (at least the rounding of the file's "
                   "optimal-length column)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative())
       ->capture_default_str();
   cmd->add_flag("--json", args->json,
                 "JSON output: queries, mismatches, unsolved, mean_us, total_ms, failures");

@@ -132,7 +132,8 @@ void setup(CLI::App& app) {
                   "edt (EDT-based generalized Voronoi) | ca (the paper's cellular automaton)")
       ->capture_default_str();
   cmd->add_option("--out", args->out,
-                  "Folder for the stage pictures a_binary .. f_graph.png and topology.json");
+                  "Folder for the stage pictures a_binary .. f_graph.png and topology.json")
+      ->check(output_dir());
   cmd->add_option("--ground-truth", args->ground_truth,
                   "Ground-truth room image (white rooms): adds segmentation recall/precision");
   cmd->add_option("--free-from", args->free_from,
@@ -141,7 +142,7 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--min-region-area", args->min_region_area,
                   "Regions smaller than this [m^2] are merged into a neighbour")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative())
       ->capture_default_str();
   cmd->add_flag("--json", args->json,
                 "JSON output: critical_points, regions (count), graph {nodes, edges}, time_ms, "

@@ -31,8 +31,12 @@ void run(const ValidateArgs& a) {
   for (std::size_t i = 0; i < s.agents.size(); ++i) {
     makespan = std::max(makespan, s.delays[i] + s.agents[i].path.travel_time());
   }
+  // At most kShown conflicts (the earliest) are printed; conflict_count has them all, so a
+  // thousand identical robots do not print half a million lines.
+  constexpr std::size_t kShown = 100;
   nlohmann::json conflicts = nlohmann::json::array();
   for (const auto& c : v.conflicts) {
+    if (conflicts.size() == kShown) break;
     conflicts.push_back({{"a", s.agents[static_cast<std::size_t>(c.a)].id},
                          {"b", s.agents[static_cast<std::size_t>(c.b)].id},
                          {"time", c.time},
@@ -45,6 +49,7 @@ void run(const ValidateArgs& a) {
                 {"agents", s.agents.size()},
                 {"makespan", makespan},
                 {"conflicts", conflicts},
+                {"conflict_count", v.conflicts.size()},
                 {"undecided_pairs", v.undecided_pairs},
                 {"min_clearance", std::isfinite(v.min_clearance) ? nlohmann::json(v.min_clearance)
                                                                  : nlohmann::json(nullptr)}});
@@ -53,6 +58,9 @@ void run(const ValidateArgs& a) {
               << " s: " << (v.valid ? "valid" : "INVALID") << "\n";
     for (const auto& c : conflicts)
       std::cout << "  overlap " << c.dump() << "\n";
+    if (v.conflicts.size() > conflicts.size())
+      std::cout << "  ... and " << v.conflicts.size() - conflicts.size()
+                << " more overlapping pairs\n";
   }
   if (!v.valid) exit_code() = 1;
 }
@@ -62,7 +70,9 @@ void setup(CLI::App& app) {
                                  "Check a schedule in continuous time: no two robots ever overlap");
   auto a = std::make_shared<ValidateArgs>();
   cmd->add_option("file", a->file, "schedule .json or .yaml")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--tolerance", a->tolerance, "accepted overlap depth [m]")->capture_default_str();
+  cmd->add_option("--tolerance", a->tolerance, "accepted overlap depth [m]")
+      ->check(non_negative())
+      ->capture_default_str();
   cmd->add_flag("--json", a->json, "JSON output");
   cmd->callback([a] { run(*a); });
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iostream>
 
+#include "cli_common.hpp"
 #include "command.hpp"
 #include "voronav/core/error.hpp"
 
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
                    [](const CommandSpec& a, const CommandSpec& b) { return a.order < b.order; });
   for (const auto& spec : reg)
     spec.setup(app);
+  if (argc > 1) watch_long_run(argv[1]);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_common.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/render/figure.hpp"
 
@@ -14,7 +15,7 @@ namespace voronav::cli {
 void add_ras_options(CLI::App* cmd, RasCliArgs& args) {
   cmd->add_option("--region-size", args.region_size,
                   "RAS: side of a square region [cells] (seed 001, S_p)")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Range(1, planning::kMaxRegionSize))
       ->capture_default_str();
   cmd->add_option("--density", args.density,
                   "RAS: number a region only if >= this many of its 8 neighbours are free "

@@ -2,11 +2,13 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "voronav/coordination/schedule_io.hpp"
 #include "voronav/core/error.hpp"
+#include "voronav/core/read_file.hpp"
 #include "voronav/io/movingai.hpp"
 #include "voronav/planning/planner_factory.hpp"
 
@@ -17,7 +19,13 @@ namespace fs = std::filesystem;
 namespace {
 
 int line_of(const YAML::Node& n) {
+  if (!n.IsDefined()) return 0;  // a missing key has no position (Mark() would throw)
   return n.Mark().line >= 0 ? n.Mark().line + 1 : 0;
+}
+
+std::string text(const YAML::Node& n, const std::string& src, const std::string& what) {
+  if (!n.IsScalar()) throw Error(src, line_of(n), what + ": expected a string");
+  return n.Scalar();
 }
 
 double number(const YAML::Node& n, const std::string& src, const std::string& what) {
@@ -45,9 +53,7 @@ Scenario load_scenario(const fs::path& path) {
   const std::string src = path.string();
   YAML::Node root;
   try {
-    root = YAML::LoadFile(src);
-  } catch (const YAML::BadFile&) {
-    throw Error(src, 0, "cannot open the file");
+    root = YAML::Load(read_file_bounded(path, kMaxTextFileBytes, "scenario file"));
   } catch (const YAML::Exception& e) {
     throw Error(src, e.mark.line + 1, "not valid YAML: " + e.msg);
   }
@@ -55,7 +61,7 @@ Scenario load_scenario(const fs::path& path) {
   Scenario s;
   s.source = path;
   if (root["map"]) {
-    const fs::path map_path = path.parent_path() / root["map"].as<std::string>();
+    const fs::path map_path = path.parent_path() / text(root["map"], src, "map");
     try {
       s.map = io::load_map(map_path);
     } catch (const Error& e) {
@@ -64,7 +70,7 @@ Scenario load_scenario(const fs::path& path) {
     s.cell_coordinates = s.map->format == io::MapFormat::kMovingAi;
   }
   if (root["coordinates"]) {
-    const auto c = root["coordinates"].as<std::string>();
+    const auto c = text(root["coordinates"], src, "coordinates");
     if (c != "cells" && c != "world") {
       throw Error(src, line_of(root["coordinates"]),
                   "coordinates: expected cells|world, got '" + c + "'");
@@ -73,13 +79,19 @@ Scenario load_scenario(const fs::path& path) {
   }
   try {
     if (root["at_start"])
-      s.map_options.at_start = parse_at_start(root["at_start"].as<std::string>());
-    if (root["at_goal"]) s.map_options.at_goal = parse_at_goal(root["at_goal"].as<std::string>());
+      s.map_options.at_start = parse_at_start(text(root["at_start"], src, "at_start"));
+    if (root["at_goal"])
+      s.map_options.at_goal = parse_at_goal(text(root["at_goal"], src, "at_goal"));
   } catch (const Error& e) {
     throw Error(src, 0, e.source() + ": " + e.reason());
   }
-  if (root["node_spacing"])
+  if (root["node_spacing"]) {
     s.map_options.node_spacing = number(root["node_spacing"], src, "node_spacing");
+    if (!(s.map_options.node_spacing >= 0.0) || !std::isfinite(s.map_options.node_spacing))
+      throw Error(src, line_of(root["node_spacing"]),
+                  "node_spacing: expected a finite number >= 0 [m] (0: automatic), got '" +
+                      root["node_spacing"].Scalar() + "'");
+  }
   const YAML::Node robots = root["robots"];
   if (!robots || !robots.IsSequence() || robots.size() == 0) {
     throw Error(src, line_of(root), "missing 'robots' (a non-empty list)");
@@ -89,7 +101,15 @@ Scenario load_scenario(const fs::path& path) {
     RobotSpec spec;
     spec.line = line_of(r);
     if (!r.IsMap()) throw Error(src, spec.line, "robot: expected a mapping");
-    spec.id = r["id"] ? static_cast<int>(number(r["id"], src, "id")) : next_id;
+    if (r["id"]) {
+      const double id = number(r["id"], src, "id");
+      if (!(id >= 0.0 && id <= 1e9) || id != std::floor(id))
+        throw Error(src, line_of(r["id"]),
+                    "id: expected an integer in 0..1000000000, got '" + r["id"].Scalar() + "'");
+      spec.id = static_cast<int>(id);
+    } else {
+      spec.id = next_id;
+    }
     next_id = spec.id + 1;
     const std::string who = "robot " + std::to_string(spec.id);
     if (r["radius"]) spec.radius = number(r["radius"], src, who + " radius");
@@ -220,11 +240,17 @@ PlannedAgents plan_agents(const Scenario& s) {
       for (std::size_t j = 0; j < s.robots.size(); ++j) {
         if (j == i || !s.robots[j].path.empty()) continue;
         const double reach = r.radius + s.robots[j].radius + h;
+        // The disc is clipped to the grid: a huge radius or spacing costs at most the map.
+        const double span_d = std::ceil(reach / g.resolution) + 1.0;
         for (const Cell c : {ends[j].start, ends[j].goal}) {
           const Vec2 p = g.cell_center(c);
-          const int span = static_cast<int>(std::ceil(reach / g.resolution)) + 1;
-          for (int dy = -span; dy <= span; ++dy) {
-            for (int dx = -span; dx <= span; ++dx) {
+          const auto clip = [&](int v, double d, int n) {
+            return static_cast<int>(std::clamp(v + d, -1.0, static_cast<double>(n)));
+          };
+          const int x0 = clip(c.x, -span_d, g.width), x1 = clip(c.x, span_d, g.width);
+          const int y0 = clip(c.y, -span_d, g.height), y1 = clip(c.y, span_d, g.height);
+          for (int dy = y0 - c.y; dy <= y1 - c.y; ++dy) {
+            for (int dx = x0 - c.x; dx <= x1 - c.x; ++dx) {
               const Cell q{c.x + dx, c.y + dy};
               if (!g.contains(q) || q == ends[i].start || q == ends[i].goal) continue;
               if (distance(g.cell_center(q), p) < reach) avoid[q] = 1;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "voronav/core/error.hpp"
+#include "voronav/core/read_file.hpp"
 
 namespace voronav::coordination {
 
@@ -106,9 +107,15 @@ Schedule parse_schedule(const std::string& text, const std::string& source) {
   } catch (const YAML::Exception& e) {
     throw Error(source, e.mark.line + 1, "not valid JSON/YAML: " + e.msg);
   }
-  auto line_of = [](const YAML::Node& n) { return n.Mark().line >= 0 ? n.Mark().line + 1 : 0; };
+  // A missing key has no position (Mark() would throw): its error names the enclosing line.
+  int context_line = 1;
+  auto line_of = [&](const YAML::Node& n) {
+    if (!n.IsDefined()) return context_line;
+    return n.Mark().line >= 0 ? n.Mark().line + 1 : 0;
+  };
   auto number = [&](const YAML::Node& n, const std::string& what) {
-    if (!n || !n.IsScalar()) throw Error(source, line_of(n), what + ": expected a number");
+    if (!n.IsDefined()) throw Error(source, context_line, what + ": missing key");
+    if (!n.IsScalar()) throw Error(source, line_of(n), what + ": expected a number");
     try {
       return n.as<double>();
     } catch (const YAML::Exception&) {
@@ -118,9 +125,14 @@ Schedule parse_schedule(const std::string& text, const std::string& source) {
   if (!root.IsMap()) throw Error(source, 1, "expected a mapping with an 'agents' list");
   Schedule s;
   try {
-    if (root["at_start"]) s.at_start = parse_at_start(root["at_start"].as<std::string>());
-    if (root["at_goal"]) s.at_goal = parse_at_goal(root["at_goal"].as<std::string>());
+    auto scalar = [&](const YAML::Node& n, const std::string& what) {
+      if (!n.IsScalar()) throw Error(source, line_of(n), what + ": expected a string");
+      return n.Scalar();
+    };
+    if (root["at_start"]) s.at_start = parse_at_start(scalar(root["at_start"], "at_start"));
+    if (root["at_goal"]) s.at_goal = parse_at_goal(scalar(root["at_goal"], "at_goal"));
   } catch (const Error& e) {
+    if (e.source() == source) throw;
     throw Error(source, 0, e.source() + ": " + e.reason());
   }
   if (root["valid"] && root["valid"].IsScalar()) s.valid = root["valid"].as<bool>(false);
@@ -128,8 +140,12 @@ Schedule parse_schedule(const std::string& text, const std::string& source) {
   if (!agents || !agents.IsSequence()) throw Error(source, line_of(root), "missing 'agents' list");
   for (const auto& a : agents) {
     const int line = line_of(a);
+    context_line = line;
     if (!a.IsMap()) throw Error(source, line, "agent: expected a mapping");
-    const int id = static_cast<int>(number(a["id"], "id"));
+    const double id_value = number(a["id"], "id");
+    if (!(id_value >= 0.0 && id_value <= 1e9) || id_value != std::floor(id_value))
+      throw Error(source, line_of(a["id"]), "id: expected an integer in 0..1000000000");
+    const int id = static_cast<int>(id_value);
     const std::string who = "agent " + std::to_string(id);
     const YAML::Node path = a["path"];
     if (!path || !path.IsSequence() || path.size() == 0) {
@@ -176,11 +192,7 @@ void write_schedule(const std::filesystem::path& path, const Schedule& s) {
 }
 
 Schedule read_schedule(const std::filesystem::path& path) {
-  std::ifstream f(path);
-  if (!f) throw Error(path.string(), 0, "cannot open the file");
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return parse_schedule(ss.str(), path.string());
+  return parse_schedule(read_file_bounded(path, kMaxTextFileBytes, "schedule file"), path.string());
 }
 
 }  // namespace voronav::coordination

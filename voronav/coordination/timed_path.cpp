@@ -99,6 +99,14 @@ std::vector<Vec2> resample(const TimedPath& path, double spacing, std::vector<do
   }
   const auto& nodes = path.nodes();
   const auto& cum = path.cumulative();
+  // Checked before the loop: a tiny spacing on a long path would allocate without bound.
+  constexpr double kMaxNodes = 1e6;
+  if (!cum.empty() && !(cum.back() / spacing + static_cast<double>(nodes.size()) <= kMaxNodes)) {
+    throw Error("node_spacing", 0,
+                "a spacing of " + std::to_string(spacing) + " m cuts a " +
+                    std::to_string(cum.back()) + " m path into more than 1000000 nodes; " +
+                    "use a larger node_spacing");
+  }
   std::vector<Vec2> out{nodes.front()};
   std::vector<double> s_out{0.0};
   for (std::size_t i = 1; i < nodes.size(); ++i) {

@@ -167,6 +167,10 @@ void ExplorationOptions::validate() const {
   if (map_beam_stride < 1) throw Error("ExplorationOptions.map_beam_stride", 0, "expected >= 1");
   if (start && !start->is_finite()) throw Error("--start", 0, "start must be finite");
   if (std::isnan(stop_at_coverage)) throw Error("ExplorationOptions.stop_at_coverage", 0, "NaN");
+  if (time_limit / dt > 1e9)
+    throw Error("ExplorationOptions.time_limit", 0,
+                "time_limit / dt is over 1e9 simulation steps, got " + std::to_string(time_limit) +
+                    " s / " + std::to_string(dt) + " s");
   drive.validate();
   laser.validate();
   controller.validate();
@@ -249,8 +253,9 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     }
   }
   if (static_cast<int>(starts.size()) < o.robots)
-    throw Error("run_exploration", 0,
-                "no room for " + std::to_string(o.robots) + " robots around the start");
+    throw Error("--robots", 0,
+                "no room for " + std::to_string(o.robots) +
+                    " robots around the start; give fewer --robots or another --start");
   Vec2 centre;
   for (const Vec2& s : starts)
     centre += s;

@@ -2,6 +2,7 @@
 
 #include <png.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 #include <fstream>
@@ -10,23 +11,28 @@
 #include <string>
 
 #include "voronav/core/error.hpp"
+#include "voronav/core/read_file.hpp"
 
 namespace voronav::io {
 namespace {
 
 constexpr int kMaxSide = 1 << 16;  // larger images are refused (a 65536^2 map is 4 GiB)
+// At most 2^28 pixels (16384^2): the decoder holds 4 bytes a pixel while converting.
+constexpr unsigned long long kMaxPixels = 1ULL << 28;
 
 void check_size(const std::filesystem::path& path, long long w, long long h) {
   if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide)
     throw Error(path.string(), 0,
                 "image size " + std::to_string(w) + "x" + std::to_string(h) + " is not in 1.." +
                     std::to_string(kMaxSide) + " per side");
+  if (static_cast<unsigned long long>(w) * static_cast<unsigned long long>(h) > kMaxPixels)
+    throw Error(path.string(), 0,
+                "image size " + std::to_string(w) + "x" + std::to_string(h) +
+                    " is over the limit of " + std::to_string(kMaxPixels) + " pixels");
 }
 
 std::string read_all(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path.string(), 0, "cannot open the image file");
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return read_file_bounded(path, kMaxMapFileBytes, "image file");
 }
 
 /// Token reader for the PGM header (whitespace and '#' comments), tracking the line.
@@ -86,10 +92,19 @@ GrayImage read_pgm(const std::filesystem::path& path) {
   check_size(path, w, ht);
   if (maxval < 1 || maxval > 65535)
     h.fail("maxval must be in 1..65535, got " + std::to_string(maxval));
+  const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(ht);
+  const std::size_t bytes_per = maxval > 255 ? 2 : 1;
+  // The raster must be in the file before anything is allocated for it (P2: >= 1 byte a pixel).
+  const std::size_t need = ascii ? n : n * bytes_per;
+  if (d.size() - std::min(d.size(), h.pos()) < need)
+    throw Error(path.string(), 0,
+                "PGM: truncated raster: expected " + std::string(ascii ? "at least " : "") +
+                    std::to_string(need) + " bytes for " + std::to_string(w) + "x" +
+                    std::to_string(ht) + ", found " +
+                    std::to_string(d.size() - std::min(d.size(), h.pos())));
   GrayImage img;
   img.width = static_cast<int>(w);
   img.height = static_cast<int>(ht);
-  const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(ht);
   img.gray.resize(n);
   img.alpha.assign(n, 255);
   auto scale = [&](long long v) {
@@ -106,8 +121,6 @@ GrayImage read_pgm(const std::filesystem::path& path) {
   if (h.pos() >= d.size() || !std::isspace(static_cast<unsigned char>(d[h.pos()])))
     h.fail("expected whitespace after maxval");
   h.advance(1);
-  const std::size_t bytes_per = maxval > 255 ? 2 : 1;
-  const std::size_t need = n * bytes_per;
   if (d.size() - h.pos() < need)
     throw Error(path.string(), 0,
                 "PGM: truncated raster: expected " + std::to_string(need) + " bytes for " +
@@ -130,6 +143,18 @@ GrayImage read_png(const std::filesystem::path& path) {
       static_cast<long long>(png.height) > kMaxSide) {
     png_image_free(&png);
     check_size(path, png.width, png.height);
+  }
+  // Deflate expands at most ~1032:1 and a 1-bit pixel is 1/8 byte, so a file this small cannot
+  // hold the image its header declares: refuse it before allocating the RGBA buffer.
+  const auto pixels = static_cast<unsigned long long>(png.width) * png.height;
+  if (pixels > kMaxPixels || pixels / 8 > 1100ULL * file.size() + 4096) {
+    png_image_free(&png);
+    throw Error(
+        path.string(), 0,
+        "PNG: " + std::to_string(png.width) + "x" + std::to_string(png.height) +
+            (pixels > kMaxPixels ? " is over the limit of " + std::to_string(kMaxPixels) + " pixels"
+                                 : " pixels cannot be stored in a file of " +
+                                       std::to_string(file.size()) + " bytes"));
   }
   png.format = PNG_FORMAT_RGBA;
   std::vector<std::uint8_t> rgba(PNG_IMAGE_SIZE(png));

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "voronav/core/error.hpp"
+#include "voronav/core/read_file.hpp"
 
 namespace voronav::io {
 namespace {
@@ -42,8 +43,8 @@ double parse_double(const std::string& s, const fs::path& file, int line, const 
 }  // namespace
 
 OccupancyGrid load_movingai_map(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path.string(), 0, "cannot open the .map file");
+  const std::string data = read_file_bounded(path, kMaxMapFileBytes, ".map file");
+  std::istringstream in(data);
   std::string line;
   int n = 0;
   auto next = [&](const char* expected) {
@@ -72,6 +73,14 @@ OccupancyGrid load_movingai_map(const fs::path& path) {
   if (height <= 0 || width <= 0 || height > kMaxSide || width > kMaxSide)
     throw Error(path.string(), n,
                 "height and width must be given and in 1.." + std::to_string(kMaxSide));
+  // The rows must be in the file before the grid is allocated.
+  if (static_cast<std::size_t>(height) * static_cast<std::size_t>(width) > data.size())
+    throw Error(
+        path.string(), n,
+        "truncated file: " + std::to_string(width) + "x" + std::to_string(height) +
+            " map rows need " +
+            std::to_string(static_cast<std::size_t>(height) * static_cast<std::size_t>(width)) +
+            " characters, the file has " + std::to_string(data.size()) + " bytes");
   OccupancyGrid grid(width, height, kFree);
   for (int row = 0; row < height; ++row) {
     next(("map row " + std::to_string(row + 1) + " of " + std::to_string(height)).c_str());
@@ -124,8 +133,7 @@ void save_movingai_map(const OccupancyGrid& grid, const fs::path& path) {
 }
 
 std::vector<MovingAiQuery> load_movingai_scen(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path.string(), 0, "cannot open the .scen file");
+  std::istringstream in(read_file_bounded(path, kMaxTextFileBytes, ".scen file"));
   std::string line;
   if (!std::getline(in, line)) throw Error(path.string(), 1, "empty file: expected 'version 1'");
   line = strip(line);

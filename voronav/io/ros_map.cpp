@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "voronav/core/error.hpp"
+#include "voronav/core/read_file.hpp"
 #include "voronav/io/image.hpp"
 
 namespace voronav::io {
@@ -100,10 +101,8 @@ OccupancyGrid image_to_occupancy(const GrayImage& image, const RosMapMetadata& m
 RosMap read_ros_map(const fs::path& yaml_path) {
   YAML::Node root;
   try {
-    root = YAML::LoadFile(yaml_path.string());
-  } catch (const YAML::BadFile&) {
-    throw Error(yaml_path.string(), 0, "cannot open the map YAML file");
-  } catch (const YAML::ParserException& e) {
+    root = YAML::Load(read_file_bounded(yaml_path, kMaxTextFileBytes, "map YAML file"));
+  } catch (const YAML::Exception& e) {
     throw Error(yaml_path.string(), e.mark.line + 1, "malformed YAML: " + e.msg);
   }
   if (!root.IsMap()) throw Error(yaml_path.string(), 1, "expected a YAML mapping of map keys");
@@ -113,7 +112,7 @@ RosMap read_ros_map(const fs::path& yaml_path) {
     throw Error(yaml_path.string(), line_of(image), "image: expected a file name");
   m.image = image.Scalar();
   m.resolution = number(require(root, yaml_path, "resolution"), yaml_path, "resolution");
-  if (!(m.resolution > 0))
+  if (!(m.resolution > 0) || !std::isfinite(m.resolution))
     throw Error(yaml_path.string(), line_of(root["resolution"]),
                 "resolution: expected a positive number [m/cell]");
   const YAML::Node origin = require(root, yaml_path, "origin");

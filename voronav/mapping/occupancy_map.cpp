@@ -168,7 +168,12 @@ void OccupancyMap::insert_laser_beam(Vec2 from, Vec2 dir, double range,
   // it.
   const auto b = g.world_to_cell(from + dir * (len + 1e-6 * g.resolution));
   if (!a || !b) return;
+  // The walk ends where the beam leaves the grid: with a tiny resolution the range can span
+  // millions of cells outside the map, which no update could touch.
+  bool inside = false;
   for_each_line_cell(*a, *b, [&](Cell c) {
+    if (!g.contains(c)) return !inside;
+    inside = true;
     if (c == *b) {
       update(c, hit ? m.p_occupied : m.p_empty);
       return true;

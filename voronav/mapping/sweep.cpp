@@ -23,7 +23,9 @@ SweepResult simulate_sweep(const BinaryGrid& truth, const SweepOptions& o) {
     if (!truth[i] && std::sqrt(static_cast<double>(df.squared_distance[i])) >= min_d)
       candidates.push_back(geo.cell_at(i));
   if (candidates.empty())
-    throw Error("sweep", 0, "no free cell keeps the requested clearance from obstacles");
+    throw Error("--clearance", 0,
+                "no free cell of the map keeps " + std::to_string(o.clearance) +
+                    " m from obstacles (sweep clearance); give a smaller --clearance");
   std::mt19937_64 rng(o.seed);
   std::uniform_int_distribution<std::size_t> pick(0, candidates.size() - 1);
   std::uniform_real_distribution<double> yaw(-std::numbers::pi, std::numbers::pi);

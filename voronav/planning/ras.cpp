@@ -88,9 +88,10 @@ void walk(std::vector<Cell>& out, Cell a, Cell b, bool eight) {
 }  // namespace
 
 void validate(const RasOptions& o) {
-  if (o.region_size < 1)
+  if (o.region_size < 1 || o.region_size > kMaxRegionSize)
     throw Error("region_size", 0,
-                "expected a region size >= 1 cell, got " + std::to_string(o.region_size));
+                "expected a region size in 1.." + std::to_string(kMaxRegionSize) + " cells, got " +
+                    std::to_string(o.region_size));
   if (o.density < 0 || o.density > 8)
     throw Error("density", 0, "expected a density in [0, 8], got " + std::to_string(o.density));
   if (o.connectivity != Connectivity::k4 && o.connectivity != Connectivity::k8)

@@ -10,13 +10,14 @@ namespace voronav::planning {
 
 RegionGrid::RegionGrid(const BinaryGrid& cells, const RegionGridOptions& options)
     : r_(options.region_size), rule_(options.rule), cells_(cells.geometry()) {
-  if (options.region_size < 1)
+  if (options.region_size < 1 || options.region_size > kMaxRegionSize)
     throw Error("region_size", 0,
-                "expected a region size >= 1 cell, got " + std::to_string(options.region_size));
+                "expected a region size in 1.." + std::to_string(kMaxRegionSize) + " cells, got " +
+                    std::to_string(options.region_size));
   const int w = cells.width(), h = cells.height();
   GridGeometry g = cells.geometry();
-  g.width = (w + r_ - 1) / r_;
-  g.height = (h + r_ - 1) / r_;
+  g.width = w / r_ + (w % r_ != 0 ? 1 : 0);  // ceil without the overflow of (w + r - 1) / r
+  g.height = h / r_ + (h % r_ != 0 ? 1 : 0);
   g.resolution = cells.resolution() * r_;
   blocked_ = BinaryGrid(g, 0);
   if (w == 0 || h == 0) return;

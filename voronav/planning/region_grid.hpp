@@ -24,6 +24,9 @@ enum class RegionRule {
   kMajorityBlocked,  ///< blocked if more than half of its in-map cells are blocked
 };
 
+/// Largest region side [cells]: the largest map side (io's limit), so the arithmetic stays in int.
+inline constexpr int kMaxRegionSize = 1 << 16;
+
 struct RegionGridOptions {
   /// Side r of a square region [cells], >= 1 (seed 001: S_p).
   int region_size = 1;
@@ -33,7 +36,8 @@ struct RegionGridOptions {
 class RegionGrid {
  public:
   RegionGrid() = default;
-  /// Cuts `cells` (1 = blocked) into regions. Throws voronav::Error for region_size < 1.
+  /// Cuts `cells` (1 = blocked) into regions. Throws voronav::Error for region_size
+  /// outside 1..kMaxRegionSize.
   RegionGrid(const BinaryGrid& cells, const RegionGridOptions& options);
 
   [[nodiscard]] int region_size() const { return r_; }

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "voronav/core/error.hpp"
+#include "voronav/core/read_file.hpp"
 
 namespace voronav::report {
 
@@ -517,6 +518,11 @@ Recording from_json(std::string_view text, const std::string& source) {
     std::string what = e.what();
     if (auto pos = what.find("parse error"); pos != std::string::npos) what = what.substr(pos);
     throw Error(source, line_of_byte(text, e.byte > 0 ? e.byte - 1 : 0), "invalid JSON: " + what);
+  } catch (const json::exception& e) {
+    // e.g. out_of_range.406 for a number such as 1e309 that does not fit a double
+    std::string what = e.what();
+    if (auto pos = what.find("] "); pos != std::string::npos) what = what.substr(pos + 2);
+    throw Error(source, 0, "invalid JSON: " + what);
   }
   const Reader rd(source);
   if (!j.is_object()) rd.fail_at("(top level)", "expected a JSON object");
@@ -766,11 +772,7 @@ void save_recording(const Recording& recording, const std::string& path) {
 }
 
 Recording load_recording(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path, 0, "cannot open the recording");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return from_json(ss.str(), path);
+  return from_json(read_file_bounded(path, kMaxTextFileBytes, "recording"), path);
 }
 
 }  // namespace voronav::report

@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "voronav/core/error.hpp"
+#include "voronav/core/read_file.hpp"
 #include "voronav/io/map_loader.hpp"
 #include "voronav/io/ros_map.hpp"
 #include "voronav/sim/scenarios.hpp"
@@ -25,6 +26,7 @@ namespace fs = std::filesystem;
 constexpr std::uint64_t kMaxU64 = std::numeric_limits<std::uint64_t>::max();
 
 int line_of(const YAML::Node& n) {
+  if (!n.IsDefined()) return 0;  // a missing key has no position (Mark() would throw)
   return n.Mark().line >= 0 ? n.Mark().line + 1 : 0;
 }
 
@@ -324,10 +326,8 @@ NetSimScenarioFile load_netsim_scenario(const std::string& path) {
   const Reader rd(path);
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw Error(path, 0, "cannot open the scenario file");
-  } catch (const YAML::ParserException& e) {
+    root = YAML::Load(read_file_bounded(path, kMaxTextFileBytes, "scenario file"));
+  } catch (const YAML::Exception& e) {
     throw Error(path, e.mark.line + 1, "malformed YAML: " + e.msg);
   }
   if (root.IsNull()) throw Error(path, 1, "the scenario file is empty (expected 'world', ...)");
