@@ -1,7 +1,8 @@
-// Planner benchmark on the Moving AI maps: mean time per scenario query for A*, Dijkstra and a
-// plain BFS flood of the whole map from the same start (the memory-bound floor of any search that
-// touches the whole map), all measured in the same run. bench/run_planning_bench.sh turns the
-// JSON output into bench/results/planning.md with the A*/BFS ratio per map.
+// Planner benchmark on the Moving AI maps: mean time per scenario query for A*, Dijkstra, JPS,
+// JPS+ (tables built before timing; the build time is its own counter) and a plain BFS flood of
+// the whole map from the same start (the memory-bound floor of any search that touches the whole
+// map), all measured in the same run. bench/run_planning_bench.sh turns the JSON output into
+// bench/results/planning.md with the JPS speed-ups over A* and the A*/BFS ratio per map.
 //
 // Maps are read from $VORONAV_MOVINGAI_DIR, else ../shared/data/movingai beside the repo, else
 // the bundled data/movingai.
@@ -17,6 +18,7 @@
 #include "voronav/io/movingai.hpp"
 #include "voronav/planning/astar.hpp"
 #include "voronav/planning/bfs.hpp"
+#include "voronav/planning/jps.hpp"
 
 namespace fs = std::filesystem;
 using namespace voronav;
@@ -60,9 +62,12 @@ std::vector<std::shared_ptr<MapCase>> load_cases(std::size_t max_queries) {
   return out;
 }
 
-void run_planner(benchmark::State& state, const MapCase& c, bool astar) {
-  planning::AStarPlanner planner({}, astar);
+void run_planner(benchmark::State& state, const MapCase& c, planning::GridPlanner& planner) {
   std::size_t expanded = 0;
+  if (auto* jps = dynamic_cast<planning::JpsPlanner*>(&planner)) {
+    // Per-map data (bit-packed map; JPS+ tables) built once, outside the timed loop.
+    state.counters["build_ms"] = jps->prepare(c.grid);
+  }
   for (auto _ : state) {
     for (const auto& [s, g] : c.queries) {
       const auto r = planner.plan(c.grid, s, g);
@@ -81,7 +86,8 @@ void run_bfs(benchmark::State& state, const MapCase& c) {
   planning::BfsFlood bfs;
   std::size_t reached = 0;
   for (auto _ : state)
-    for (const auto& q : c.queries) reached += bfs.flood(c.grid, q.first, planning::Connectivity::k8);
+    for (const auto& q : c.queries)
+      reached += bfs.flood(c.grid, q.first, planning::Connectivity::k8);
   const double n = static_cast<double>(state.iterations() * c.queries.size());
   state.counters["us_per_query"] =
       benchmark::Counter(n, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
@@ -100,15 +106,25 @@ int main(int argc, char** argv) {
     return 2;
   }
   for (const auto& c : cases) {
-    benchmark::RegisterBenchmark(("astar/" + c->name).c_str(),
-                                 [c](benchmark::State& s) { run_planner(s, *c, true); })
-        ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("dijkstra/" + c->name).c_str(),
-                                 [c](benchmark::State& s) { run_planner(s, *c, false); })
-        ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("bfs/" + c->name).c_str(),
-                                 [c](benchmark::State& s) { run_bfs(s, *c); })
-        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("astar/" + c->name).c_str(), [c](benchmark::State& s) {
+      planning::AStarPlanner p;
+      run_planner(s, *c, p);
+    })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("jps/" + c->name).c_str(), [c](benchmark::State& s) {
+      planning::JpsPlanner p;
+      run_planner(s, *c, p);
+    })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("jps+/" + c->name).c_str(), [c](benchmark::State& s) {
+      planning::JpsPlusPlanner p;
+      run_planner(s, *c, p);
+    })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("dijkstra/" + c->name).c_str(), [c](benchmark::State& s) {
+      planning::DijkstraPlanner p;
+      run_planner(s, *c, p);
+    })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("bfs/" + c->name).c_str(), [c](benchmark::State& s) {
+      run_bfs(s, *c);
+    })->Unit(benchmark::kMillisecond);
   }
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();

@@ -40,6 +40,57 @@ def case_scen_arena():
     check(out["mismatches"] == 0 and out["unsolved"] == 0, "dijkstra: " + str(out))
 
 
+def case_scen_jps_and_wild_formats():
+    """Issue #16: jps and jps+ on a shipped map, query subsets and per-query CSV, and the Moving AI
+    files as they are in the wild (space-separated v1.0, %g lengths, water, scaled maps)."""
+    astar = json.loads(run("scen", "--map", ARENA, "--scen", ARENA + ".scen", "--json").stdout)
+    for planner in ("jps", "jps+"):
+        out = json.loads(run("scen", "--map", ARENA, "--scen", ARENA + ".scen", "--planner",
+                             planner, "--json").stdout)
+        check(out["planner"] == planner and out["mismatches"] == 0 and out["unsolved"] == 0,
+              str(out))
+        check(out["expanded_total"] < astar["expanded_total"], f"{planner}: {out} vs {astar}")
+    out = json.loads(run("scen", "--map", ARENA, "--scen", ARENA + ".scen", "--first", "7",
+                         "--json").stdout)
+    check(out["queries"] == 7 and out["first_id"] == 0, str(out))
+    with tempfile.TemporaryDirectory() as d:
+        csv = os.path.join(d, "q.csv")
+        out = json.loads(run("scen", "--map", ARENA, "--scen", ARENA + ".scen", "--range", "5:15",
+                             "--per-query", csv, "--json").stdout)
+        lines = open(csv).read().splitlines()
+        check(out["queries"] == 10 and lines[0] == "id,length,expected,expanded,us", str(lines[:2]))
+        ids = [int(l.split(",")[0]) for l in lines[1:]]
+        check(ids == list(range(5, 15)), str(ids))
+        check(sum(int(l.split(",")[3]) for l in lines[1:]) == out["expanded_total"], str(out))
+        p = run("scen", "--map", ARENA, "--scen", ARENA + ".scen", "--range", "9:3", expect=2)
+        check("--range" in p.stderr and "9:3" in p.stderr, p.stderr)
+        # The issue's reproduction: empty 970x170, corner to corner, "1039" printed by %g.
+        m = os.path.join(d, "empty.map")
+        with open(m, "w") as f:
+            f.write("type octile\nheight 170\nwidth 970\nmap\n" + ("." * 970 + "\n") * 170)
+        with open(m + ".scen", "w") as f:
+            f.write("version 1.0\n0 empty.map 970 170 0 0 969 169 1039\n")
+        for planner in ("astar", "jps", "jps+"):
+            out = json.loads(run("scen", "--map", m, "--scen", m + ".scen", "--planner", planner,
+                                 "--json").stdout)
+            check(out["mismatches"] == 0 and out["expanded_total"] < 2000, f"{planner}: {out}")
+        with open(m + ".bad.scen", "w") as f:
+            f.write("version 1.0\n0 empty.map 970 170 0 0 969 169 1038.9\n")
+        run("scen", "--map", m, "--scen", m + ".bad.scen", "--json", expect=1)
+        # Water to water (W is traversable from water only); land queries avoid the pool; the
+        # scenario's size columns ask for the map scaled 2x.
+        w = os.path.join(d, "pool.map")
+        with open(w, "w") as f:
+            f.write("type octile\nheight 3\nwidth 4\nmap\n.WW.\n.WW.\n....\n")
+        with open(w + ".scen", "w") as f:
+            f.write("version 1\n0\tpool.map\t4\t3\t1\t0\t2\t1\t1.41421356\n"
+                    "0\tpool.map\t4\t3\t0\t0\t3\t0\t7\n"
+                    "0\tpool.map\t8\t6\t2\t0\t5\t3\t4.24264069\n")
+        out = json.loads(run("scen", "--map", w, "--scen", w + ".scen", "--json").stdout)
+        check(out["mismatches"] == 0 and out["unsolved"] == 0, str(out))
+        check(out["water_queries"] == 2 and out["scaled_queries"] == 1, str(out))
+
+
 def case_scen_mapf_map():
     m = os.path.join(DATA, "mapf", "random-32-32-20.map")
     s = os.path.join(DATA, "mapf", "random-32-32-20-random-1.scen")

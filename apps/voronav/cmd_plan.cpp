@@ -79,6 +79,7 @@ void run(const PlanArgs& a) {
                        {"cells", r.length_cells},
                        {"expanded", r.expanded},
                        {"time_ms", r.time_ms},
+                       {"preprocess_ms", r.preprocess_ms},
                        {"path", path},
                        {"path_world", world}};
     if (ras != nullptr) add_ras_json(out, *ras, ctx);
@@ -110,7 +111,7 @@ void setup(CLI::App& app) {
                   "metres in the world frame for ROS and image maps (see --cells)")
       ->required();
   cmd->add_option("--goal", args->goal, "Goal X,Y, same frame as --start")->required();
-  cmd->add_option("--planner", args->planner, "astar | dijkstra | ras | topo")
+  cmd->add_option("--planner", args->planner, "astar | dijkstra | ras | jps | jps+ | topo")
       ->capture_default_str();
   cmd->add_option("--connectivity", args->connectivity, "4 or 8 neighbours")
       ->check(CLI::IsMember({4, 8}))

@@ -206,7 +206,7 @@ TEST(MovingAi, LoadsArenaAndAllScenQueriesFit) {
   EXPECT_EQ(q[0].start_y, 11);
   EXPECT_DOUBLE_EQ(q[0].optimal_length, 1.0);
   EXPECT_EQ(q[0].line, 2);
-  EXPECT_DOUBLE_EQ(q[0].optimal_rounding, 0.0);  // "1": an integer is exact
+  EXPECT_DOUBLE_EQ(q[0].optimal_rounding, 1e-5);  // "1": 6 significant digits (%g)
   // Every query's start and goal are passable in the file frame.
   for (const auto& s : q) {
     EXPECT_EQ(g[movingai_to_cell(s.start_x, s.start_y, g.height())], kFree);

@@ -1,11 +1,13 @@
 #include "voronav/io/movingai.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <string_view>
 
 #include "voronav/core/error.hpp"
 #include "voronav/core/read_file.hpp"
@@ -40,9 +42,105 @@ double parse_double(const std::string& s, const fs::path& file, int line, const 
   return v;
 }
 
+// Splits a .scen line: at tabs when it has one (map names may hold spaces), else at whitespace.
+std::vector<std::string> split_columns(const std::string& line) {
+  std::vector<std::string> cols;
+  if (line.find('\t') != std::string::npos) {
+    std::size_t start = 0;
+    for (;;) {
+      const std::size_t tab = line.find('\t', start);
+      cols.push_back(line.substr(start, tab - start));
+      if (tab == std::string::npos) break;
+      start = tab + 1;
+    }
+    for (auto& c : cols) {  // spaces around a tab-separated field
+      while (!c.empty() && c.back() == ' ')
+        c.pop_back();
+      while (!c.empty() && c.front() == ' ')
+        c.erase(c.begin());
+    }
+    return cols;
+  }
+  std::istringstream ls(line);
+  for (std::string c; ls >> c;)
+    cols.push_back(c);
+  return cols;
+}
+
 }  // namespace
 
+double last_digit_unit(const std::string& text, int min_digits) {
+  std::size_t i = 0;
+  if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+  const std::size_t mant_begin = i;
+  while (i < text.size() && (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '.'))
+    ++i;
+  const std::string mant = text.substr(mant_begin, i - mant_begin);
+  int exponent = 0;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    const std::string e = text.substr(i + 1 + (i + 1 < text.size() && text[i + 1] == '+'));
+    std::from_chars(e.data(), e.data() + e.size(), exponent);
+  }
+  const std::size_t dot = mant.find('.');
+  const int int_len = static_cast<int>(dot == std::string::npos ? mant.size() : dot);
+  int lead = 0, last = 0, digit = 0;
+  bool nonzero = false;
+  for (char c : mant) {
+    if (c == '.') continue;
+    const int power = int_len - 1 - digit++;
+    if (c != '0' && !nonzero) {
+      nonzero = true;
+      lead = power;
+    }
+    last = power;
+  }
+  if (!nonzero) return 0.0;
+  return std::pow(10.0, static_cast<double>(std::min(last, lead - (min_digits - 1)) + exponent));
+}
+
+bool matches_optimal(const MovingAiQuery& query, double found, double tolerance) {
+  // 1e-9 relative slack: the unit itself is a rounded power of ten.
+  const double allowed = std::max(tolerance, query.optimal_rounding) * (1.0 + 1e-9);
+  return std::abs(found - query.optimal_length) <= allowed;
+}
+
+BinaryGrid MovingAiTerrain::traversable(bool water) const {
+  BinaryGrid g(cells.width(), cells.height(), 1);
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const char c = cells[i];
+    g[i] = water ? (c == 'W' ? 0 : 1) : (c == '.' || c == 'G' || c == 'S' ? 0 : 1);
+  }
+  return g;
+}
+
+MovingAiTerrain scale_movingai_terrain(const MovingAiTerrain& terrain, int width, int height) {
+  if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide)
+    throw Error("scale_movingai_terrain", 0,
+                "size " + std::to_string(width) + "x" + std::to_string(height) + " must be in 1.." +
+                    std::to_string(kMaxSide));
+  const int w = terrain.cells.width(), h = terrain.cells.height();
+  MovingAiTerrain out{GridMap<char>(width, height, '@')};
+  for (int fy = 0; fy < height; ++fy) {
+    const int src_row = static_cast<int>(static_cast<long long>(fy) * h / height);
+    for (int x = 0; x < width; ++x) {
+      const int src_x = static_cast<int>(static_cast<long long>(x) * w / width);
+      out.cells[movingai_to_cell(x, fy, height)] =
+          terrain.cells[movingai_to_cell(src_x, src_row, h)];
+    }
+  }
+  return out;
+}
+
 OccupancyGrid load_movingai_map(const fs::path& path) {
+  const MovingAiTerrain t = load_movingai_terrain(path);
+  OccupancyGrid grid(t.cells.width(), t.cells.height(), kFree);
+  const BinaryGrid land = t.traversable(false);
+  for (std::size_t i = 0; i < land.size(); ++i)
+    grid[i] = land[i] == 0 ? kFree : kOccupied;
+  return grid;
+}
+
+MovingAiTerrain load_movingai_terrain(const fs::path& path) {
   const std::string data = read_file_bounded(path, kMaxMapFileBytes, ".map file");
   std::istringstream in(data);
   std::string line;
@@ -81,7 +179,7 @@ OccupancyGrid load_movingai_map(const fs::path& path) {
             " map rows need " +
             std::to_string(static_cast<std::size_t>(height) * static_cast<std::size_t>(width)) +
             " characters, the file has " + std::to_string(data.size()) + " bytes");
-  OccupancyGrid grid(width, height, kFree);
+  MovingAiTerrain terrain{GridMap<char>(width, height, '@')};
   for (int row = 0; row < height; ++row) {
     next(("map row " + std::to_string(row + 1) + " of " + std::to_string(height)).c_str());
     if (static_cast<int>(line.size()) != width)
@@ -89,25 +187,12 @@ OccupancyGrid load_movingai_map(const fs::path& path) {
                   "map row has " + std::to_string(line.size()) + " characters, expected width " +
                       std::to_string(width));
     for (int x = 0; x < width; ++x) {
-      std::int8_t v;
-      switch (line[static_cast<std::size_t>(x)]) {
-        case '.':
-        case 'G':
-        case 'S':
-          v = kFree;
-          break;
-        case '@':
-        case 'O':
-        case 'T':
-        case 'W':
-          v = kOccupied;
-          break;
-        default:
-          throw Error(path.string(), n,
-                      std::string("unknown map character '") + line[static_cast<std::size_t>(x)] +
-                          "' at column " + std::to_string(x + 1) + " (expected . G S @ O T W)");
-      }
-      grid[movingai_to_cell(x, row, height)] = v;
+      const char c = line[static_cast<std::size_t>(x)];
+      if (std::string_view(".GS@OTW").find(c) == std::string_view::npos)
+        throw Error(path.string(), n,
+                    std::string("unknown map character '") + c + "' at column " +
+                        std::to_string(x + 1) + " (expected . G S @ O T W)");
+      terrain.cells[movingai_to_cell(x, row, height)] = c;
     }
   }
   while (std::getline(in, line)) {
@@ -115,7 +200,7 @@ OccupancyGrid load_movingai_map(const fs::path& path) {
     if (!strip(line).empty())
       throw Error(path.string(), n, "extra text after the " + std::to_string(height) + " map rows");
   }
-  return grid;
+  return terrain;
 }
 
 void save_movingai_map(const OccupancyGrid& grid, const fs::path& path) {
@@ -150,18 +235,11 @@ std::vector<MovingAiQuery> load_movingai_scen(const fs::path& path) {
     ++n;
     line = strip(line);
     if (line.empty()) continue;
-    std::vector<std::string> cols;
-    std::size_t start = 0;
-    for (;;) {
-      const std::size_t tab = line.find('\t', start);
-      cols.push_back(line.substr(start, tab - start));
-      if (tab == std::string::npos) break;
-      start = tab + 1;
-    }
+    const std::vector<std::string> cols = split_columns(line);
     if (cols.size() != 9)
       throw Error(path.string(), n,
-                  "expected 9 tab-separated columns (bucket, map, width, height, start x, start y, "
-                  "goal x, goal y, optimal length), got " +
+                  "expected 9 tab-separated (or whitespace-separated) columns (bucket, map, width, "
+                  "height, start x, start y, goal x, goal y, optimal length), got " +
                       std::to_string(cols.size()));
     MovingAiQuery q;
     q.line = n;
@@ -174,12 +252,7 @@ std::vector<MovingAiQuery> load_movingai_scen(const fs::path& path) {
     q.goal_x = parse_int(cols[6], path, n, "goal x");
     q.goal_y = parse_int(cols[7], path, n, "goal y");
     q.optimal_length = parse_double(cols[8], path, n, "optimal length");
-    if (const std::size_t dot = cols[8].find('.'); dot != std::string::npos) {
-      std::size_t end = dot + 1;
-      while (end < cols[8].size() && std::isdigit(static_cast<unsigned char>(cols[8][end])))
-        ++end;
-      q.optimal_rounding = std::pow(10.0, -static_cast<double>(end - dot - 1));
-    }
+    q.optimal_rounding = last_digit_unit(cols[8]);
     if (q.optimal_length < 0) throw Error(path.string(), n, "optimal length must be >= 0");
     out.push_back(std::move(q));
   }
@@ -198,9 +271,23 @@ void save_movingai_scen(const std::vector<MovingAiQuery>& queries, const fs::pat
 }
 
 void check_scen_fits(const std::vector<MovingAiQuery>& queries, const OccupancyGrid& grid,
-                     const fs::path& scen_path) {
+                     const fs::path& scen_path, bool allow_scaling) {
   for (const auto& q : queries) {
-    if (q.map_width != grid.width() || q.map_height != grid.height())
+    const bool scaled = q.map_width != grid.width() || q.map_height != grid.height();
+    if (scaled && allow_scaling) {
+      if (q.map_width <= 0 || q.map_height <= 0 || q.map_width > kMaxSide ||
+          q.map_height > kMaxSide)
+        throw Error(scen_path.string(), q.line,
+                    "map size columns must be in 1.." + std::to_string(kMaxSide));
+      if (q.start_x < 0 || q.start_y < 0 || q.goal_x < 0 || q.goal_y < 0 ||
+          q.start_x >= q.map_width || q.goal_x >= q.map_width || q.start_y >= q.map_height ||
+          q.goal_y >= q.map_height)
+        throw Error(scen_path.string(), q.line,
+                    "start or goal lies outside the " + std::to_string(q.map_width) + "x" +
+                        std::to_string(q.map_height) + " map of the size columns");
+      continue;
+    }
+    if (scaled)
       throw Error(scen_path.string(), q.line,
                   "query is for a " + std::to_string(q.map_width) + "x" +
                       std::to_string(q.map_height) + " map, but the map is " +

@@ -26,11 +26,13 @@ double octile_distance(Cell a, Cell b) {
 
 double path_length_cells(const std::vector<Cell>& path) {
   double len = 0.0;
-  for (std::size_t i = 1; i < path.size(); ++i) len += octile_distance(path[i - 1], path[i]);
+  for (std::size_t i = 1; i < path.size(); ++i)
+    len += octile_distance(path[i - 1], path[i]);
   return len;
 }
 
-bool is_valid_path(const BinaryGrid& grid, const std::vector<Cell>& path, Connectivity connectivity) {
+bool is_valid_path(const BinaryGrid& grid, const std::vector<Cell>& path,
+                   Connectivity connectivity) {
   if (path.empty()) return false;
   auto free_cell = [&](Cell c) { return grid.contains(c) && grid[c] == 0; };
   for (std::size_t i = 0; i < path.size(); ++i) {
@@ -67,7 +69,8 @@ PlanResult AStarPlanner::plan(const BinaryGrid& grid, Cell start, Cell goal) {
   const int w = grid.width(), h = grid.height();
   const std::size_t n = grid.size();
   if (stamp_.size() < n) {
-    g_.resize(n);
+    gs_.resize(n);
+    gd_.resize(n);
     parent_.resize(n);
     heap_pos_.assign(n, internal::IndexedMinHeap::kNotInHeap);
     stamp_.assign(n, 0);
@@ -81,34 +84,43 @@ PlanResult AStarPlanner::plan(const BinaryGrid& grid, Cell start, Cell goal) {
   const auto* cells = grid.data().data();
   const std::int32_t start_i = static_cast<std::int32_t>(grid.index(start));
   const std::int32_t goal_i = static_cast<std::int32_t>(grid.index(goal));
-  auto heuristic = [&](int x, int y) {
-    if (!use_heuristic_) return 0.0;
+  // Exact cost a + b sqrt 2 from integer counts (see the header).
+  auto cost = [](std::int32_t a, std::int32_t b) {
+    return static_cast<double>(a) + kSqrt2 * static_cast<double>(b);
+  };
+  // f = cost(g counts + heuristic counts): the heuristic is octile (hi - lo straight, lo diagonal
+  // steps) or Manhattan for 4-connectivity.
+  auto f_of = [&](int x, int y, std::int32_t s, std::int32_t d) {
+    if (!use_heuristic_) return cost(s, d);
     const int dx = std::abs(x - goal.x), dy = std::abs(y - goal.y);
-    if (!eight) return static_cast<double>(dx + dy);
+    if (!eight) return cost(s + dx + dy, d);
     const int lo = std::min(dx, dy), hi = std::max(dx, dy);
-    return static_cast<double>(hi - lo) + kSqrt2 * static_cast<double>(lo);
+    return cost(s + hi - lo, d + lo);
   };
 
   open_.reset(&heap_pos_);
   stamp_[static_cast<std::size_t>(start_i)] = search_id_;
-  g_[static_cast<std::size_t>(start_i)] = 0.0;
+  gs_[static_cast<std::size_t>(start_i)] = 0;
+  gd_[static_cast<std::size_t>(start_i)] = 0;
   parent_[static_cast<std::size_t>(start_i)] = -1;
   closed_[static_cast<std::size_t>(start_i)] = 0;
-  open_.push_or_decrease(start_i, heuristic(start.x, start.y), 0.0);
+  open_.push_or_decrease(start_i, f_of(start.x, start.y, 0, 0), 0.0);
 
-  auto relax = [&](std::int32_t from, double g_from, int nx, int ny, double cost) {
+  // (s, d): the step counts of g at `from` plus this step (1, 0) or (0, 1).
+  auto relax = [&](std::int32_t from, std::int32_t s, std::int32_t d, int nx, int ny) {
     const std::int32_t ni = ny * w + nx;
     const auto su = static_cast<std::size_t>(ni);
-    const double ng = g_from + cost;
+    const double ng = cost(s, d);
     if (stamp_[su] != search_id_) {
       stamp_[su] = search_id_;
       closed_[su] = 0;
-    } else if (closed_[su] || ng >= g_[su]) {
+    } else if (closed_[su] || ng >= cost(gs_[su], gd_[su])) {
       return;
     }
-    g_[su] = ng;
+    gs_[su] = s;
+    gd_[su] = d;
     parent_[su] = from;
-    open_.push_or_decrease(ni, ng + heuristic(nx, ny), ng);
+    open_.push_or_decrease(ni, f_of(nx, ny, s, d), ng);
   };
 
   bool found = false;
@@ -131,21 +143,21 @@ PlanResult AStarPlanner::plan(const BinaryGrid& grid, Cell start, Cell goal) {
       }
     }
     const int x = cur % w, y = cur / w;
-    const double g = g_[cu];
+    const std::int32_t s1 = gs_[cu] + 1, d0 = gd_[cu], s0 = gs_[cu], d1 = gd_[cu] + 1;
     const bool e = x + 1 < w && cells[cu + 1] == 0;
     const bool wst = x > 0 && cells[cu - 1] == 0;
     const bool nth = y + 1 < h && cells[cu + static_cast<std::size_t>(w)] == 0;
     const bool sth = y > 0 && cells[cu - static_cast<std::size_t>(w)] == 0;
-    if (e) relax(cur, g, x + 1, y, 1.0);
-    if (nth) relax(cur, g, x, y + 1, 1.0);
-    if (wst) relax(cur, g, x - 1, y, 1.0);
-    if (sth) relax(cur, g, x, y - 1, 1.0);
+    if (e) relax(cur, s1, d0, x + 1, y);
+    if (nth) relax(cur, s1, d0, x, y + 1);
+    if (wst) relax(cur, s1, d0, x - 1, y);
+    if (sth) relax(cur, s1, d0, x, y - 1);
     if (eight) {
       const auto uw = static_cast<std::size_t>(w);
-      if (e && nth && cells[cu + uw + 1] == 0) relax(cur, g, x + 1, y + 1, kSqrt2);
-      if (wst && nth && cells[cu + uw - 1] == 0) relax(cur, g, x - 1, y + 1, kSqrt2);
-      if (wst && sth && cells[cu - uw - 1] == 0) relax(cur, g, x - 1, y - 1, kSqrt2);
-      if (e && sth && cells[cu - uw + 1] == 0) relax(cur, g, x + 1, y - 1, kSqrt2);
+      if (e && nth && cells[cu + uw + 1] == 0) relax(cur, s0, d1, x + 1, y + 1);
+      if (wst && nth && cells[cu + uw - 1] == 0) relax(cur, s0, d1, x - 1, y + 1);
+      if (wst && sth && cells[cu - uw - 1] == 0) relax(cur, s0, d1, x - 1, y - 1);
+      if (e && sth && cells[cu - uw + 1] == 0) relax(cur, s0, d1, x + 1, y - 1);
     }
   }
   // Leave heap positions clean for the next query.
@@ -155,7 +167,8 @@ PlanResult AStarPlanner::plan(const BinaryGrid& grid, Cell start, Cell goal) {
   for (std::int32_t i = goal_i; i != -1; i = parent_[static_cast<std::size_t>(i)])
     result.path.push_back(grid.cell_at(static_cast<std::size_t>(i)));
   std::reverse(result.path.begin(), result.path.end());
-  result.length_cells = g_[static_cast<std::size_t>(goal_i)];
+  result.length_cells =
+      cost(gs_[static_cast<std::size_t>(goal_i)], gd_[static_cast<std::size_t>(goal_i)]);
   return finish(PlanStatus::kOk);
 }
 

@@ -48,6 +48,18 @@ TEST(AStar, OpenGridOctileLength) {
   EXPECT_EQ(r.expanded, r.path.size());
 }
 
+TEST(AStar, OpenSpaceTiesBrokenTowardLargerG) {
+  // Issue #16: an empty 970x170 map corner to corner expanded 118,974 nodes when f ties were
+  // ordered by floating-point noise; with exact costs and larger-g tie-breaking it is the path.
+  const BinaryGrid g(970, 170, 0);
+  AStarPlanner astar;
+  const PlanResult r = astar.plan(g, {0, 0}, {969, 169});
+  ASSERT_TRUE(r.ok());
+  EXPECT_DOUBLE_EQ(r.length_cells, 800.0 + 169.0 * std::numbers::sqrt2);
+  EXPECT_LT(r.expanded, 2000u);
+  EXPECT_EQ(r.expanded, r.path.size());
+}
+
 TEST(AStar, FourConnectedIsManhattan) {
   const BinaryGrid g(10, 10, 0);
   AStarPlanner astar({.connectivity = Connectivity::k4});

@@ -54,6 +54,9 @@ struct PlanResult {
   double length_cells = 0.0;
   std::size_t expanded = 0;
   double time_ms = 0.0;
+  /// Time spent building per-map data (JPS's bit-packed map, JPS+'s jump tables) in this call;
+  /// not part of time_ms, 0 when the data was cached or the planner needs none.
+  double preprocess_ms = 0.0;
   std::vector<Cell> expanded_cells;  ///< when PlannerOptions::record_expanded
 
   [[nodiscard]] bool ok() const { return status == PlanStatus::kOk; }

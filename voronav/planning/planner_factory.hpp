@@ -1,6 +1,6 @@
-// make_planner: builds a GridPlanner by name ("astar", "dijkstra", ...), so the CLI, scenario
-// files and benchmarks select planners the same way. plan_on_map() is the one-call convenience:
-// binarize, inflate by the robot radius, plan.
+// make_planner: builds a GridPlanner by name ("astar", "dijkstra", "ras", "jps", "jps+"), so the
+// CLI, scenario files and benchmarks select planners the same way. plan_on_map() is the one-call
+// convenience: binarize, inflate by the robot radius, plan.
 #pragma once
 
 #include <memory>
@@ -12,9 +12,10 @@
 
 namespace voronav::planning {
 
-enum class PlannerKind { kAStar, kDijkstra, kRas };
+enum class PlannerKind { kAStar, kDijkstra, kRas, kJps, kJpsPlus };
 
-/// Parses "astar" / "dijkstra" / "ras"; throws voronav::Error naming the accepted values otherwise.
+/// Parses "astar" / "dijkstra" / "ras" / "jps" / "jps+"; throws voronav::Error naming the accepted
+/// values otherwise.
 [[nodiscard]] PlannerKind parse_planner_kind(std::string_view name);
 [[nodiscard]] std::vector<std::string_view> planner_names();
 
