@@ -1,0 +1,149 @@
+#include "voronav/coordination/prioritized.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "voronav/core/error.hpp"
+#include "voronav/planning/grid_planner.hpp"
+#include "voronav/planning/planner_factory.hpp"
+
+namespace voronav::coordination {
+
+namespace {
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+PrioritizedResult plan_prioritized(const BinaryGrid& blocked, const std::vector<SippRobot>& robots,
+                                   std::vector<int> order, const PrioritizedOptions& options) {
+  const std::size_t n = robots.size();
+  if (order.size() != n) throw Error("order", 0, "expected one entry per robot");
+  double rmax = 0.0;
+  std::map<double, BinaryGrid> inflated;
+  for (const auto& r : robots) {
+    rmax = std::max(rmax, r.radius);
+    if (!inflated.count(r.radius))
+      inflated.emplace(r.radius, planning::make_planning_grid(blocked, r.radius));
+  }
+  PrioritizedResult out;
+  const int max_restarts = options.max_restarts < 0 ? static_cast<int>(n) : options.max_restarts;
+  for (;;) {
+    Reservations res(blocked.geometry(), rmax);
+    out.plans.assign(n, {});
+    out.failed = -1;
+    for (const int i : order) {
+      const SippRobot& r = robots[static_cast<std::size_t>(i)];
+      SippStats st;
+      auto plan = sipp_plan(inflated.at(r.radius), r.start, r.goal, r.radius, r.v_max, res,
+                            options.sipp, &st);
+      out.expansions += st.expansions;
+      if (!plan) {
+        out.failed = i;
+        break;
+      }
+      res.add(trajectory_of(*plan, options.sipp.at_start, options.sipp.at_goal), r.radius);
+      out.plans[static_cast<std::size_t>(i)] = std::move(*plan);
+    }
+    out.order = order;
+    if (out.failed < 0) break;
+    if (out.restarts >= max_restarts || order.front() == out.failed) return out;
+    ++out.restarts;
+    order.erase(std::find(order.begin(), order.end(), out.failed));
+    order.insert(order.begin(), out.failed);
+  }
+  out.ok = true;
+  out.arrivals.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    out.arrivals[i] = out.plans[i].back().t;
+    out.makespan = std::max(out.makespan, out.arrivals[i]);
+    out.sum_of_arrivals += out.arrivals[i];
+  }
+  return out;
+}
+
+SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vector<Agent>& agents,
+                                       const SippCoordinateOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SippCoordinationResult out;
+  const GridGeometry& g = blocked.geometry();
+  std::vector<SippRobot> robots;
+  for (const Agent& a : agents) {
+    if (std::isfinite(a.path.limits().a_max)) {
+      throw Error(
+          "robot " + std::to_string(a.id), 0,
+          "--method sipp plans with instantaneous acceleration; a_max must be null/infinity");
+    }
+    const auto s = g.world_to_cell(a.path.nodes().front());
+    const auto e = g.world_to_cell(a.path.nodes().back());
+    if (!s || !e || !g.contains(*s) || !g.contains(*e))
+      throw Error("robot " + std::to_string(a.id), 0, "start or goal outside the map");
+    robots.push_back({a.id, *s, *e, a.radius, a.path.limits().v_max});
+  }
+  std::vector<int> order(agents.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = static_cast<int>(i);
+  out.order_source = "index";
+  if (options.order != SearchKind::kNone && agents.size() > 1) {
+    const MdNetwork net = build_network(agents, options.map);
+    order = bottom_level_edf(net).order;
+    out.order_source = "edf";
+  }
+  out.order_ms = ms_since(t0);
+  const auto t1 = std::chrono::steady_clock::now();
+  PrioritizedOptions po = options.planning;
+  po.sipp.at_start = options.map.at_start;
+  po.sipp.at_goal = options.map.at_goal;
+  out.plan = plan_prioritized(blocked, robots, order, po);
+  out.plan_ms = ms_since(t1);
+  if (!out.plan.ok) {
+    out.message = "prioritized SIPP failed: robot " +
+                  std::to_string(agents[static_cast<std::size_t>(out.plan.failed)].id) +
+                  " has no plan after " + std::to_string(out.plan.restarts) + " restarts";
+    out.time_ms = ms_since(t0);
+    return out;
+  }
+  const auto t2 = std::chrono::steady_clock::now();
+  std::vector<double> radii;
+  for (std::size_t i = 0; i < agents.size(); ++i) {
+    out.trajectories.push_back(
+        trajectory_of(out.plan.plans[i], options.map.at_start, options.map.at_goal));
+    radii.push_back(agents[i].radius);
+  }
+  out.verification = verify_trajectories(out.trajectories, radii, options.tolerance);
+  out.verify_ms = ms_since(t2);
+  out.valid = out.verification.valid;
+  out.message = out.valid ? (out.plan.restarts == 0
+                                 ? "ok"
+                                 : "ok after " + std::to_string(out.plan.restarts) + " restarts")
+                          : "the continuous-time check found overlaps in the SIPP plans";
+  out.time_ms = ms_since(t0);
+  return out;
+}
+
+IndividualBounds individual_bounds(const BinaryGrid& blocked, const std::vector<Agent>& agents) {
+  IndividualBounds out;
+  const GridGeometry& g = blocked.geometry();
+  std::map<double, BinaryGrid> inflated;
+  auto planner = planning::make_planner(planning::PlannerKind::kAStar, planning::PlannerOptions{});
+  for (const Agent& a : agents) {
+    if (!inflated.count(a.radius))
+      inflated.emplace(a.radius, planning::make_planning_grid(blocked, a.radius));
+    const auto s = g.world_to_cell(a.path.nodes().front());
+    const auto e = g.world_to_cell(a.path.nodes().back());
+    double t = kInfinity;
+    if (s && e) {
+      const auto res = planner->plan(inflated.at(a.radius), *s, *e);
+      if (res.ok()) t = res.length_cells * g.resolution / a.path.limits().v_max;
+    }
+    out.travel.push_back(t);
+    out.makespan = std::max(out.makespan, t);
+    out.sum += t;
+  }
+  return out;
+}
+
+}  // namespace voronav::coordination

@@ -1,0 +1,84 @@
+// Prioritized planning with SIPP (issue #21): robots are planned one after the other in a priority
+// order, each with SIPP (sipp.hpp) against the trajectories of the robots planned before it
+// (Erdmann & Lozano-Perez 1987; Silver 2005 for the grid version). Prioritized planning is
+// incomplete: a robot can fail because a higher-priority robot parks on its only way, passes its
+// start before it can leave, or crosses its goal after it would arrive. The fallback here is the
+// classic restart rule: the robot that failed moves to the top of the order and every robot is
+// planned again, at most max_restarts times (each restart is reported). PBS (Ma et al. 2019) is
+// not implemented; see docs/coordination.md.
+//
+// coordinate_sipp(): the priority order comes from the paper's machinery (seed 002): the (M,D)
+// network of the robots' fixed paths and its Bottom-level EDF order (section 4.1), or the index
+// order; then prioritized SIPP; then the same continuous-time checker as the delay schedules.
+#pragma once
+
+#include <vector>
+
+#include "voronav/coordination/coordinator.hpp"
+#include "voronav/coordination/sipp.hpp"
+
+namespace voronav::coordination {
+
+struct SippRobot {
+  int id = 0;
+  Cell start, goal;
+  double radius = 0.5;  ///< [m]
+  double v_max = 1.0;   ///< [m/s]
+};
+
+enum class Objective { kMakespan, kSumOfArrivals };
+
+struct PrioritizedOptions {
+  SippOptions sipp;
+  int max_restarts = -1;  ///< -1 = the number of robots
+};
+
+struct PrioritizedResult {
+  bool ok = false;
+  std::vector<std::vector<TimedWaypoint>> plans;  ///< per robot (by index)
+  std::vector<int> order;                         ///< the order that succeeded (or the last tried)
+  int restarts = 0;                               ///< failed-robot-first restarts used
+  int failed = -1;                                ///< robot index that failed last (when !ok)
+  std::vector<double> arrivals;                   ///< per robot [s]
+  double makespan = 0.0, sum_of_arrivals = 0.0;
+  std::size_t expansions = 0;
+};
+
+/// `blocked`: the raw map (1 = blocked); it is inflated per robot radius.
+[[nodiscard]] PrioritizedResult plan_prioritized(const BinaryGrid& blocked,
+                                                 const std::vector<SippRobot>& robots,
+                                                 std::vector<int> order,
+                                                 const PrioritizedOptions& options = {});
+
+struct SippCoordinateOptions {
+  CollisionMapOptions map;              ///< at-start / at-goal, node spacing for the (M,D) network
+  SearchKind order = SearchKind::kEdf;  ///< kNone: index order; otherwise the EDF order
+  PrioritizedOptions planning;
+  double tolerance = 1e-6;  ///< checker tolerance [m]
+};
+
+struct SippCoordinationResult {
+  PrioritizedResult plan;
+  std::vector<Trajectory> trajectories;  ///< per robot, under the presence conventions
+  Verification verification;
+  bool valid = false;
+  std::string order_source;  ///< "edf" or "index"
+  double order_ms = 0.0, plan_ms = 0.0, verify_ms = 0.0, time_ms = 0.0;
+  std::string message;
+};
+
+/// Robots from `agents` (start = first path node, goal = last, in `blocked`'s cells).
+[[nodiscard]] SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked,
+                                                     const std::vector<Agent>& agents,
+                                                     const SippCoordinateOptions& options = {});
+
+/// Lower bounds: each robot's shortest 8-connected travel time on the map inflated by its radius
+/// (A*), ignoring the others; makespan bound = their max, sum bound = their sum.
+struct IndividualBounds {
+  std::vector<double> travel;  ///< [s] per robot
+  double makespan = 0.0, sum = 0.0;
+};
+[[nodiscard]] IndividualBounds individual_bounds(const BinaryGrid& blocked,
+                                                 const std::vector<Agent>& agents);
+
+}  // namespace voronav::coordination
