@@ -216,6 +216,9 @@ void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::
          {"arrival", ok ? nlohmann::json(r.plan.arrivals[i]) : nlohmann::json(nullptr)},
          {"shortest", lb.travel[i]}});
   }
+  nlohmann::json failures = nlohmann::json::array();
+  for (const int i : r.plan.failures)
+    failures.push_back(agents[static_cast<std::size_t>(i)].id);
   nlohmann::json order = nlohmann::json::array();
   for (const int i : r.plan.order)
     order.push_back(agents[static_cast<std::size_t>(i)].id);
@@ -237,6 +240,8 @@ void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::
       {"plan_ms", r.plan_ms},
       {"verify_ms", r.verify_ms},
       {"restarts", r.plan.restarts},
+      {"failures", failures},
+      {"soft_fallbacks", r.plan.soft_fallbacks},
       {"expansions", r.plan.expansions},
       {"order", order},
       {"at_start", co::to_string(mo.at_start)},

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "voronav/core/error.hpp"
@@ -31,15 +32,50 @@ PrioritizedResult plan_prioritized(const BinaryGrid& blocked, const std::vector<
   }
   PrioritizedResult out;
   const int max_restarts = options.max_restarts < 0 ? static_cast<int>(n) : options.max_restarts;
+  const GridGeometry& g = blocked.geometry();
+  const bool soft = options.avoid_unplanned && (options.sipp.at_start == AtStart::kWait ||
+                                                options.sipp.at_goal == AtGoal::kStay);
   for (;;) {
-    Reservations res(blocked.geometry(), rmax);
+    Reservations res(g, rmax);
+    // Owners 0..n-1: the unplanned robots' starts (wait) and goals (stay) for all time;
+    // owners n..2n-1: their starts only while they need to get away (2 cells of travel).
+    std::vector<char> tier0(2 * n, 1), tier1(2 * n, 1), none(2 * n, 1);
+    if (soft) {
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto& r = robots[j];
+        const int full = static_cast<int>(j), brief = static_cast<int>(n + j);
+        if (options.sipp.at_start == AtStart::kWait) {
+          if (options.full_starts)
+            res.add_soft(g.cell_center(r.start), r.radius, 0.0, kInfinity, full);
+          res.add_soft(g.cell_center(r.start), r.radius, 0.0, 2.0 * g.resolution / r.v_max, brief);
+          tier1[n + j] = 0;
+          if (!options.full_starts) tier0[n + j] = 0;
+        }
+        if (options.sipp.at_goal == AtGoal::kStay)
+          res.add_soft(g.cell_center(r.goal), r.radius, 0.0, kInfinity, full);
+        tier0[j] = 0;
+      }
+    }
     out.plans.assign(n, {});
     out.failed = -1;
+    out.soft_fallbacks = 0;
     for (const int i : order) {
       const SippRobot& r = robots[static_cast<std::size_t>(i)];
       SippStats st;
-      auto plan = sipp_plan(inflated.at(r.radius), r.start, r.goal, r.radius, r.v_max, res,
-                            options.sipp, &st);
+      tier0[static_cast<std::size_t>(i)] = 1;
+      tier1[n + static_cast<std::size_t>(i)] = 1;
+      tier0[n + static_cast<std::size_t>(i)] = 1;
+      SippOptions so = options.sipp;
+      std::optional<std::vector<TimedWaypoint>> plan;
+      int tier = 0;
+      for (const std::vector<char>* inactive : {&tier0, &tier1, &none}) {
+        if (!soft && inactive != &none) continue;
+        so.inactive_owners = inactive;
+        plan = sipp_plan(inflated.at(r.radius), r.start, r.goal, r.radius, r.v_max, res, so, &st);
+        if (plan) break;
+        ++tier;
+      }
+      if (plan && soft && tier > 0) ++out.soft_fallbacks;
       out.expansions += st.expansions;
       if (!plan) {
         out.failed = i;
@@ -50,6 +86,7 @@ PrioritizedResult plan_prioritized(const BinaryGrid& blocked, const std::vector<
     }
     out.order = order;
     if (out.failed < 0) break;
+    out.failures.push_back(out.failed);
     if (out.restarts >= max_restarts || order.front() == out.failed) return out;
     ++out.restarts;
     order.erase(std::find(order.begin(), order.end(), out.failed));

@@ -5,7 +5,10 @@
 // start before it can leave, or crosses its goal after it would arrive. The fallback here is the
 // classic restart rule: the robot that failed moves to the top of the order and every robot is
 // planned again, at most max_restarts times (each restart is reported). PBS (Ma et al. 2019) is
-// not implemented; see docs/coordination.md.
+// not implemented; see docs/coordination.md. Before that, each robot first tries to keep off the
+// starts (with --at-start wait) and goals (with --at-goal stay) of the robots not planned yet, as
+// stationary discs, and plans without them only when that fails (the same rule as the fixed-path
+// planner of seed 002's scenario, scenario.hpp); `soft_fallbacks` counts those robots.
 //
 // coordinate_sipp(): the priority order comes from the paper's machinery (seed 002): the (M,D)
 // network of the robots' fixed paths and its Bottom-level EDF order (section 4.1), or the index
@@ -30,7 +33,10 @@ enum class Objective { kMakespan, kSumOfArrivals };
 
 struct PrioritizedOptions {
   SippOptions sipp;
-  int max_restarts = -1;  ///< -1 = the number of robots
+  int max_restarts = -1;        ///< -1 = the number of robots
+  bool avoid_unplanned = true;  ///< keep off the starts/goals of robots not planned yet if possible
+  /// First tier avoids unplanned starts for all time (true) or only while they get away (false).
+  bool full_starts = false;
 };
 
 struct PrioritizedResult {
@@ -39,9 +45,11 @@ struct PrioritizedResult {
   std::vector<int> order;                         ///< the order that succeeded (or the last tried)
   int restarts = 0;                               ///< failed-robot-first restarts used
   int failed = -1;                                ///< robot index that failed last (when !ok)
+  std::vector<int> failures;                      ///< the robot that failed, per attempt
   std::vector<double> arrivals;                   ///< per robot [s]
   double makespan = 0.0, sum_of_arrivals = 0.0;
   std::size_t expansions = 0;
+  int soft_fallbacks = 0;  ///< robots that had to cross an unplanned robot's start or goal
 };
 
 /// `blocked`: the raw map (1 = blocked); it is inflated per robot radius.

@@ -64,6 +64,10 @@ void Reservations::add(const Trajectory& tr, double radius) {
   }
 }
 
+void Reservations::add_soft(Vec2 p, double radius, double s0, double s1, int owner) {
+  add_segment({s0, s1, p, {0.0, 0.0}, radius, owner});
+}
+
 void Reservations::add_segment(const Segment& s) {
   const int id = static_cast<int>(segments_.size());
   segments_.push_back(s);
@@ -161,7 +165,9 @@ class Search {
         res_(res),
         o_(o),
         safe_(g_.size()),
-        computed_(g_.size(), 0) {}
+        computed_(g_.size(), 0),
+        edge_bad_(8 * g_.size()),
+        edge_done_(8 * g_.size(), 0) {}
 
   const std::vector<Interval>& safe(std::size_t cell) {
     if (computed_[cell]) return safe_[cell];
@@ -170,6 +176,7 @@ class Search {
     std::vector<Interval> unsafe;
     for (const int id : res_.near(g_.cell_at(cell))) {
       const auto& s = res_.segments()[static_cast<std::size_t>(id)];
+      if (inactive(s)) continue;
       const double R = radius_ + s.radius - o_.slack;
       const Vec2 d0 = s.p0 - c;
       const auto neg = negative_part(dot(s.z, s.z), 2.0 * dot(d0, s.z), dot(d0, d0) - R * R);
@@ -199,6 +206,7 @@ class Search {
       for (const int id : res_.near(g_.cell_at(c))) {
         if (seen_[static_cast<std::size_t>(id)] == stamp_) continue;
         seen_[static_cast<std::size_t>(id)] = stamp_;
+        if (inactive(res_.segments()[static_cast<std::size_t>(id)])) continue;
         const auto iv = bad_departures(pa, pb, v_, radius_,
                                        res_.segments()[static_cast<std::size_t>(id)], o_.slack);
         if (iv) out.push_back(*iv);
@@ -278,7 +286,18 @@ class Search {
           }
           if (out.empty() || m.g > out.back().t) out.push_back({m.g, p});
         }
-        return out;
+        // Drop waypoints inside a straight constant-velocity run (fewer pieces to check).
+        std::vector<TimedWaypoint> merged;
+        for (const TimedWaypoint& w : out) {
+          if (merged.size() >= 2) {
+            const TimedWaypoint& a = merged[merged.size() - 2];
+            const TimedWaypoint& b = merged.back();
+            const Vec2 v1 = (b.p - a.p) / (b.t - a.t), v2 = (w.p - b.p) / (w.t - b.t);
+            if ((v1 - v2).norm() < 1e-12) merged.pop_back();
+          }
+          merged.push_back(w);
+        }
+        return merged;
       }
       const Cell c = g_.cell_at(n.cell);
       const Vec2 pc = g_.cell_center(c);
@@ -289,7 +308,12 @@ class Search {
           continue;  // no corner cutting
         const std::size_t qi = g_.index(q);
         const double tau = distance(pc, g_.cell_center(q)) / v_;
-        const auto bads = bad(n.cell, qi);
+        const std::size_t ek = n.cell * 8 + static_cast<std::size_t>(d);
+        if (!edge_done_[ek]) {
+          edge_bad_[ek] = bad(n.cell, qi);
+          edge_done_[ek] = 1;
+        }
+        const auto& bads = edge_bad_[ek];
         const auto& targets = safe(qi);
         for (std::size_t k = 0; k < targets.size(); ++k) {
           const double lo = std::max(n.g, targets[k].first - tau);
@@ -312,6 +336,11 @@ class Search {
   }
 
  private:
+  bool inactive(const Reservations::Segment& s) const {
+    const auto* v = o_.inactive_owners;
+    return s.owner >= 0 && v != nullptr && static_cast<std::size_t>(s.owner) < v->size() &&
+           (*v)[static_cast<std::size_t>(s.owner)] != 0;
+  }
   const BinaryGrid& free_;
   const GridGeometry& g_;
   double radius_, v_;
@@ -319,6 +348,8 @@ class Search {
   const SippOptions& o_;
   std::vector<std::vector<Interval>> safe_;
   std::vector<char> computed_;
+  std::vector<std::vector<Interval>> edge_bad_;  // per (cell, direction), computed once
+  std::vector<char> edge_done_;
   std::vector<unsigned> seen_;
   unsigned stamp_ = 0;
 };

@@ -35,11 +35,16 @@ class Reservations {
   /// Adds a robot (its pieces must have zero acceleration). Presence before the first piece and
   /// after the last one (trajectory.present_from / present_to) is a stationary disc.
   void add(const Trajectory& trajectory, double radius);
+  /// A stationary disc at `p` on [s0, s1] that belongs to robot `owner`: the search ignores it
+  /// when SippOptions::inactive_owners marks the owner (used for the starts and goals of robots not
+  /// planned yet, which prioritized planning avoids when it can).
+  void add_soft(Vec2 p, double radius, double s0, double s1, int owner);
 
   struct Segment {
     double s0 = 0.0, s1 = 0.0;  ///< [s], s1 may be infinity (stationary then)
     Vec2 p0, z;                 ///< position at s0, velocity
     double radius = 0.0;
+    int owner = -1;  ///< -1: always active
   };
   [[nodiscard]] const std::vector<Segment>& segments() const { return segments_; }
   [[nodiscard]] const std::vector<int>& near(Cell c) const { return cells_[geometry_.index(c)]; }
@@ -59,6 +64,8 @@ struct SippOptions {
   std::size_t max_expansions = 200'000;  ///< give up after this many state expansions
   /// Accepted overlap [m] in the safety tests (floating point slack; the checker accepts 1e-6).
   double slack = 1e-7;
+  /// Owners whose soft discs are ignored (index = owner; empty or missing = active).
+  const std::vector<char>* inactive_owners = nullptr;
 };
 
 struct SippStats {

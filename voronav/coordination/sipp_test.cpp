@@ -22,7 +22,9 @@ BinaryGrid grid(const std::vector<std::string>& rows) {
   return g;
 }
 
-Vec2 centre(Cell c) { return {c.x + 0.5, c.y + 0.5}; }
+Vec2 centre(Cell c) {
+  return {c.x + 0.5, c.y + 0.5};
+}
 
 Agent straight(int id, Cell a, Cell b) {
   return Agent{id, TimedPath({centre(a), centre(b)}, {1.0, kInfinity}), 0.5};
