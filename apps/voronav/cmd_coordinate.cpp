@@ -33,6 +33,9 @@ struct CoordArgs {
   std::string search = "ga";
   std::string method = "delays";
   int max_restarts = -1;
+  std::string order = "edf";
+  bool cross_goals = false;
+  std::string objective = "makespan";
   std::string at_start, at_goal;
   std::uint64_t seed = 1;
   double node_spacing = -1.0;
@@ -204,8 +207,14 @@ void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::
   const BinaryGrid blocked = binarize(sc.map->grid);
   co::SippCoordinateOptions opt;
   opt.map = mo;
-  opt.order = a.search == "none" ? co::SearchKind::kNone : co::SearchKind::kEdf;
+  opt.order = co::parse_order_rule(a.order);
+  if (a.objective == "sum") {
+    opt.objective = co::Objective::kSumOfArrivals;
+  } else if (a.objective != "makespan") {
+    throw Error("--objective", 0, "expected makespan|sum, got '" + a.objective + "'");
+  }
   opt.planning.max_restarts = a.max_restarts;
+  opt.planning.avoid_goals = !a.cross_goals;
   const co::SippCoordinationResult r = co::coordinate_sipp(blocked, agents, opt);
   const co::IndividualBounds lb = co::individual_bounds(blocked, agents);
   const bool ok = r.plan.ok;
@@ -384,8 +393,15 @@ void setup(CLI::App& app) {
                   "delays (seed 002: start delays on fixed paths) | sipp (prioritized SIPP)")
       ->capture_default_str();
   cmd->add_option("--search", a->search,
-                  "none | exhaustive | edf | ga (with --method sipp: none = index order, "
-                  "otherwise the EDF order)")
+                  "none | exhaustive | edf | ga (delays only; sipp uses --order)")
+      ->capture_default_str();
+  cmd->add_option("--order", a->order,
+                  "sipp: priority order edf | index | shortest-first | longest-first | best "
+                  "(best: all of them, keep the best by --objective)")
+      ->capture_default_str();
+  cmd->add_flag("--cross-goals", a->cross_goals,
+                "sipp: do not try to keep off the goals of robots planned later first");
+  cmd->add_option("--objective", a->objective, "sipp --order best: makespan | sum")
       ->capture_default_str();
   cmd->add_option("--max-restarts", a->max_restarts,
                   "sipp: failed-robot-first restarts (-1 = number of robots)")

@@ -19,6 +19,32 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace
 
+OrderRule parse_order_rule(const std::string& s) {
+  if (s == "edf") return OrderRule::kEdf;
+  if (s == "index" || s == "none") return OrderRule::kIndex;
+  if (s == "shortest-first") return OrderRule::kShortestFirst;
+  if (s == "longest-first") return OrderRule::kLongestFirst;
+  if (s == "best") return OrderRule::kBest;
+  throw Error("--order", 0,
+              "expected edf|index|shortest-first|longest-first|best, got '" + s + "'");
+}
+
+const char* to_string(OrderRule r) {
+  switch (r) {
+    case OrderRule::kEdf:
+      return "edf";
+    case OrderRule::kIndex:
+      return "index";
+    case OrderRule::kShortestFirst:
+      return "shortest-first";
+    case OrderRule::kLongestFirst:
+      return "longest-first";
+    case OrderRule::kBest:
+      return "best";
+  }
+  return "?";
+}
+
 PrioritizedResult plan_prioritized(const BinaryGrid& blocked, const std::vector<SippRobot>& robots,
                                    std::vector<int> order, const PrioritizedOptions& options) {
   const std::size_t n = robots.size();
@@ -51,7 +77,7 @@ PrioritizedResult plan_prioritized(const BinaryGrid& blocked, const std::vector<
           tier1[n + j] = 0;
           if (!options.full_starts) tier0[n + j] = 0;
         }
-        if (options.sipp.at_goal == AtGoal::kStay)
+        if (options.sipp.at_goal == AtGoal::kStay && options.avoid_goals)
           res.add_soft(g.cell_center(r.goal), r.radius, 0.0, kInfinity, full);
         tier0[j] = 0;
       }
@@ -120,21 +146,56 @@ SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vec
       throw Error("robot " + std::to_string(a.id), 0, "start or goal outside the map");
     robots.push_back({a.id, *s, *e, a.radius, a.path.limits().v_max});
   }
-  std::vector<int> order(agents.size());
-  for (std::size_t i = 0; i < order.size(); ++i)
-    order[i] = static_cast<int>(i);
-  out.order_source = "index";
-  if (options.order != SearchKind::kNone && agents.size() > 1) {
-    const MdNetwork net = build_network(agents, options.map);
-    order = bottom_level_edf(net).order;
-    out.order_source = "edf";
+  const std::size_t n = agents.size();
+  auto index_order = [&] {
+    std::vector<int> o(n);
+    for (std::size_t i = 0; i < n; ++i)
+      o[i] = static_cast<int>(i);
+    return o;
+  };
+  std::vector<std::pair<OrderRule, std::vector<int>>> candidates;
+  const bool best = options.order == OrderRule::kBest;
+  if (best || options.order == OrderRule::kEdf) {
+    if (n > 1) {
+      const MdNetwork net = build_network(agents, options.map);
+      candidates.push_back({OrderRule::kEdf, bottom_level_edf(net).order});
+    } else {
+      candidates.push_back({OrderRule::kEdf, index_order()});
+    }
+  }
+  if (best || options.order == OrderRule::kIndex)
+    candidates.push_back({OrderRule::kIndex, index_order()});
+  if (best || options.order == OrderRule::kShortestFirst ||
+      options.order == OrderRule::kLongestFirst) {
+    const IndividualBounds lb = individual_bounds(blocked, agents);
+    std::vector<int> o = index_order();
+    std::stable_sort(o.begin(), o.end(), [&](int a, int b) {
+      return lb.travel[static_cast<std::size_t>(a)] < lb.travel[static_cast<std::size_t>(b)];
+    });
+    if (best || options.order == OrderRule::kShortestFirst)
+      candidates.push_back({OrderRule::kShortestFirst, o});
+    std::reverse(o.begin(), o.end());
+    if (best || options.order == OrderRule::kLongestFirst)
+      candidates.push_back({OrderRule::kLongestFirst, o});
   }
   out.order_ms = ms_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
   PrioritizedOptions po = options.planning;
   po.sipp.at_start = options.map.at_start;
   po.sipp.at_goal = options.map.at_goal;
-  out.plan = plan_prioritized(blocked, robots, order, po);
+  auto key = [&](const PrioritizedResult& r) {
+    return options.objective == Objective::kMakespan ? std::pair{r.makespan, r.sum_of_arrivals}
+                                                     : std::pair{r.sum_of_arrivals, r.makespan};
+  };
+  bool have = false;
+  for (const auto& [rule, order] : candidates) {
+    PrioritizedResult r = plan_prioritized(blocked, robots, order, po);
+    if (!have || (r.ok && (!out.plan.ok || key(r) < key(out.plan)))) {
+      out.plan = std::move(r);
+      out.order_source = to_string(rule);
+      have = true;
+    }
+  }
   out.plan_ms = ms_since(t1);
   if (!out.plan.ok) {
     out.message = "prioritized SIPP failed: robot " +

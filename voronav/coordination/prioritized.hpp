@@ -15,6 +15,7 @@
 // order; then prioritized SIPP; then the same continuous-time checker as the delay schedules.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "voronav/coordination/coordinator.hpp"
@@ -37,6 +38,8 @@ struct PrioritizedOptions {
   bool avoid_unplanned = true;  ///< keep off the starts/goals of robots not planned yet if possible
   /// First tier avoids unplanned starts for all time (true) or only while they get away (false).
   bool full_starts = false;
+  /// First tier avoids unplanned goals (with --at-goal stay) for all time.
+  bool avoid_goals = true;
 };
 
 struct PrioritizedResult {
@@ -58,9 +61,17 @@ struct PrioritizedResult {
                                                  std::vector<int> order,
                                                  const PrioritizedOptions& options = {});
 
+/// Where the priority order comes from: the EDF order of the (M,D) network (seed 002, section
+/// 4.1), the index order, the robots by increasing or decreasing shortest travel time, or all of
+/// them, keeping the best by the objective.
+enum class OrderRule { kEdf, kIndex, kShortestFirst, kLongestFirst, kBest };
+[[nodiscard]] OrderRule parse_order_rule(const std::string& s);
+[[nodiscard]] const char* to_string(OrderRule r);
+
 struct SippCoordinateOptions {
-  CollisionMapOptions map;              ///< at-start / at-goal, node spacing for the (M,D) network
-  SearchKind order = SearchKind::kEdf;  ///< kNone: index order; otherwise the EDF order
+  CollisionMapOptions map;  ///< at-start / at-goal, node spacing for the (M,D) network
+  OrderRule order = OrderRule::kEdf;
+  Objective objective = Objective::kMakespan;  ///< used by kBest (ties: the other one)
   PrioritizedOptions planning;
   double tolerance = 1e-6;  ///< checker tolerance [m]
 };
@@ -70,7 +81,7 @@ struct SippCoordinationResult {
   std::vector<Trajectory> trajectories;  ///< per robot, under the presence conventions
   Verification verification;
   bool valid = false;
-  std::string order_source;  ///< "edf" or "index"
+  std::string order_source;  ///< the rule that gave the returned order
   double order_ms = 0.0, plan_ms = 0.0, verify_ms = 0.0, time_ms = 0.0;
   std::string message;
 };
