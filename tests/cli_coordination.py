@@ -96,6 +96,42 @@ def case_no_delay_schedule():
         check(out["valid"] and out["order"] == [2, 1], str(out))
 
 
+def case_sipp_mapf():
+    """Prioritized SIPP on the MAPF benchmark: valid under both conventions, never below the
+    8-connected bounds; the schedule (timed waypoints + map) passes validate-schedule, and a
+    waypoint moved into a wall is caught by the map check."""
+    common = ["--method", "sipp", "--map", MAPF_MAP, "--scen", MAPF_SCEN, "--agents", "30",
+              "--json"]
+    for conv in (["wait", "stay"], ["appear", "leave"]):
+        out = json.loads(run("coordinate", *common, "--at-start", conv[0], "--at-goal",
+                             conv[1]).stdout)
+        check(out["valid"] and out["status"] == "ok", str(out)[:400])
+        arr = [a["arrival"] for a in out["agents"]]
+        check(abs(out["makespan"] - max(arr)) < 1e-9 and abs(out["sum_of_arrivals"] - sum(arr)) < 1e-6,
+              "summary")
+        for a in out["agents"]:
+            check(a["arrival"] >= a["shortest"] - 1e-9, "arrival >= shortest travel " + str(a))
+        check(out["makespan"] >= out["bound_makespan"] - 1e-9, "makespan >= bound")
+    with tempfile.TemporaryDirectory() as d:
+        run("coordinate", *common, "--at-start", "wait", "--at-goal", "stay", "--out", d)
+        sched = json.load(open(os.path.join(d, "schedule.json")))
+        check("map" in sched and all("waypoints" in a for a in sched["agents"]), str(sched)[:300])
+        for f in ["schedule.json", "schedule.yaml", "index.html", "trajectories.png"]:
+            check(os.path.getsize(os.path.join(d, f)) > 100, f + " written")
+        v = json.loads(run("validate-schedule", os.path.join(d, "schedule.json"), "--json").stdout)
+        check(v["valid"] and v["map"] is not None and v["wall_hits"] == [], str(v)[:300])
+        # Robot 1's second waypoint moved onto the map's first blocked cell: a wall hit.
+        rows = open(MAPF_MAP).read().split("map\n", 1)[1].split("\n")
+        y, x = next((y, r.index("@")) for y, r in enumerate(rows) if "@" in r)
+        wx, wy = x + 0.5, len(rows[:32]) - y - 0.5  # Moving AI rows go down, the world y up
+        sched["agents"][0]["waypoints"][1][1:] = [wx, wy]
+        bad = os.path.join(d, "wall.json")
+        json.dump(sched, open(bad, "w"))
+        v = json.loads(run("validate-schedule", bad, "--json", expect=1).stdout)
+        check(not v["valid"] and v["wall_hits"] and v["wall_hits"][0]["robot"] == sched["agents"][0]["id"],
+              str(v)[:300])
+
+
 def case_errors():
     with tempfile.TemporaryDirectory() as d:
         sc = os.path.join(d, "bad.yaml")
@@ -103,6 +139,10 @@ def case_errors():
             f.write("robots:\n  - {id: 1, path: [[0, 0], [1, 0]], v_max: fast}\n")
         p = run("coordinate", "--scenario", sc, expect=2)
         check("bad.yaml" in p.stderr and "v_max" in p.stderr, p.stderr)
+        p = run("coordinate", "--scenario", CROSSING, "--method", "magic", expect=2)
+        check("delays|sipp" in p.stderr, p.stderr)
+        p = run("coordinate", "--scenario", CROSSING, "--method", "sipp", expect=2)
+        check("needs a map" in p.stderr, p.stderr)
         p = run("coordinate", "--scenario", CROSSING, "--search", "tabu", expect=2)
         check("none|exhaustive|edf|ga" in p.stderr, p.stderr)
         p = run("coordinate", "--map", MAPF_MAP, "--scen", MAPF_SCEN, "--agents", "100000",

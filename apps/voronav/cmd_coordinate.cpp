@@ -13,6 +13,7 @@
 #include "command.hpp"
 #include "recordings.hpp"
 #include "voronav/coordination/coordinator.hpp"
+#include "voronav/coordination/prioritized.hpp"
 #include "voronav/coordination/scenario.hpp"
 #include "voronav/coordination/schedule_io.hpp"
 #include "voronav/core/error.hpp"
@@ -30,6 +31,11 @@ struct CoordArgs {
   int agents = 10;
   double radius = 0.5;
   std::string search = "ga";
+  std::string method = "delays";
+  int max_restarts = -1;
+  std::string order = "edf";
+  bool cross_goals = false;
+  std::string objective = "makespan";
   std::string at_start, at_goal;
   std::uint64_t seed = 1;
   double node_spacing = -1.0;
@@ -151,6 +157,130 @@ void draw_collision_map(const std::vector<co::Agent>& agents, const co::Coordina
   }
 }
 
+/// Replay of SIPP plans: poses sampled along the trajectories.
+report::Recording sipp_recording(const OccupancyGrid& map, const std::vector<co::Agent>& agents,
+                                 const co::SippCoordinationResult& r) {
+  report::Recording rec;
+  rec.title = "Coordinated team: prioritized SIPP (" + r.order_source + " order)";
+  rec.description = std::to_string(agents.size()) + " robots; " + r.message + ". Makespan " +
+                    std::to_string(r.plan.makespan) + " s; the continuous-time check " +
+                    (r.valid ? "passed" : "failed") + ".";
+  rec.map = map;
+  const double end = r.plan.makespan, dt = 0.1;
+  for (std::size_t i = 0; i < agents.size(); ++i) {
+    report::RobotTrack track;
+    track.id = agents[i].id;
+    track.radius = agents[i].radius;
+    const co::Trajectory& tr = r.trajectories[i];
+    double yaw = 0.0;
+    for (double t = 0.0;; t += dt) {
+      const double tt = std::min(t, end);
+      const Vec2 p = tr.position(tt), ahead = tr.position(tt + dt);
+      if ((ahead - p).norm() > 1e-9) yaw = std::atan2(ahead.y - p.y, ahead.x - p.x);
+      track.poses.push_back({tt, {p, yaw}});
+      if (tt >= end) break;
+    }
+    std::vector<Vec2> pts;
+    for (const auto& w : r.plan.plans[i])
+      if (pts.empty() || (pts.back() - w.p).norm() > 0.0) pts.push_back(w.p);
+    rec.paths.push_back({agents[i].id, 0.0, "SIPP path", pts});
+    rec.robots.push_back(std::move(track));
+  }
+  return rec;
+}
+
+/// Writes the schedule (with the map it was planned on, relative to the output folder).
+void write_schedules(const co::Scenario& sc, co::Schedule s, const std::filesystem::path& dir) {
+  if (sc.map && !sc.map->source.empty()) {
+    std::error_code ec;
+    const auto rel = std::filesystem::relative(std::filesystem::absolute(sc.map->source),
+                                               std::filesystem::absolute(dir), ec);
+    s.map = ec ? std::filesystem::absolute(sc.map->source).string() : rel.string();
+  }
+  co::write_schedule(dir / "schedule.json", s);
+  co::write_schedule(dir / "schedule.yaml", s);
+}
+
+/// --method sipp: prioritized SIPP in the EDF (or index) order, checked in continuous time.
+void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::Agent>& agents,
+              const co::CollisionMapOptions& mo) {
+  if (!sc.map) throw Error("--method", 0, "sipp plans on a grid: the scenario needs a map");
+  const BinaryGrid blocked = binarize(sc.map->grid);
+  co::SippCoordinateOptions opt;
+  opt.map = mo;
+  opt.order = co::parse_order_rule(a.order);
+  if (a.objective == "sum") {
+    opt.objective = co::Objective::kSumOfArrivals;
+  } else if (a.objective != "makespan") {
+    throw Error("--objective", 0, "expected makespan|sum, got '" + a.objective + "'");
+  }
+  opt.planning.max_restarts = a.max_restarts;
+  opt.planning.avoid_goals = !a.cross_goals;
+  const co::SippCoordinationResult r = co::coordinate_sipp(blocked, agents, opt);
+  const co::IndividualBounds lb = co::individual_bounds(blocked, agents);
+  const bool ok = r.plan.ok;
+  nlohmann::json js_agents = nlohmann::json::array();
+  for (std::size_t i = 0; i < agents.size(); ++i) {
+    js_agents.push_back(
+        {{"id", agents[i].id},
+         {"arrival", ok ? nlohmann::json(r.plan.arrivals[i]) : nlohmann::json(nullptr)},
+         {"shortest", lb.travel[i]}});
+  }
+  nlohmann::json failures = nlohmann::json::array();
+  for (const int i : r.plan.failures)
+    failures.push_back(agents[static_cast<std::size_t>(i)].id);
+  nlohmann::json order = nlohmann::json::array();
+  for (const int i : r.plan.order)
+    order.push_back(agents[static_cast<std::size_t>(i)].id);
+  const nlohmann::json out = {
+      {"method", "sipp"},
+      {"order_source", r.order_source},
+      {"status", ok ? "ok" : "sipp_failed"},
+      {"message", r.message},
+      {"makespan", ok ? nlohmann::json(r.plan.makespan) : nlohmann::json(nullptr)},
+      {"sum_of_arrivals", ok ? nlohmann::json(r.plan.sum_of_arrivals) : nlohmann::json(nullptr)},
+      {"bound_makespan", lb.makespan},
+      {"bound_sum", lb.sum},
+      {"valid", r.valid},
+      {"min_clearance", std::isfinite(r.verification.min_clearance)
+                            ? nlohmann::json(r.verification.min_clearance)
+                            : nlohmann::json(nullptr)},
+      {"time_ms", r.time_ms},
+      {"order_ms", r.order_ms},
+      {"plan_ms", r.plan_ms},
+      {"verify_ms", r.verify_ms},
+      {"restarts", r.plan.restarts},
+      {"failures", failures},
+      {"soft_fallbacks", r.plan.soft_fallbacks},
+      {"expansions", r.plan.expansions},
+      {"order", order},
+      {"at_start", co::to_string(mo.at_start)},
+      {"at_goal", co::to_string(mo.at_goal)},
+      {"agents", js_agents}};
+  if (!a.out.empty() && ok) {
+    std::filesystem::create_directories(a.out);
+    co::Schedule s{agents, {}, mo.at_start, mo.at_goal, r.valid, r.plan.plans, {}};
+    for (const auto& w : r.plan.plans)
+      s.delays.push_back(w.front().t);
+    write_schedules(sc, s, a.out);
+    draw_trajectories(sc, agents, a.out / "trajectories.png");
+    report::write_replay_html(sipp_recording(sc.map->grid, agents, r),
+                              (a.out / "index.html").string());
+  }
+  if (a.json) {
+    print_json(out);
+  } else {
+    std::cout << agents.size() << " robots, prioritized SIPP (" << r.order_source
+              << " order): " << r.message << "\n";
+    if (ok) {
+      std::cout << "makespan " << r.plan.makespan << " s (bound " << lb.makespan
+                << "), sum of arrivals " << r.plan.sum_of_arrivals << " s (bound " << lb.sum
+                << "), valid " << (r.valid ? "yes" : "no") << ", " << r.time_ms << " ms\n";
+    }
+  }
+  if (!r.valid) exit_code() = 1;
+}
+
 void run(const CoordArgs& a) {
   co::Scenario sc;
   if (!a.scenario.empty()) {
@@ -169,6 +299,9 @@ void run(const CoordArgs& a) {
   if (a.node_spacing >= 0.0) sc.map_options.node_spacing = a.node_spacing;
   const auto planned = co::plan_agents(sc);
   const auto& agents = planned.agents;
+  if (a.method == "sipp") return run_sipp(a, sc, agents, sc.map_options);
+  if (a.method != "delays")
+    throw Error("--method", 0, "expected delays|sipp, got '" + a.method + "'");
   co::CoordinateOptions opt;
   opt.map = sc.map_options;
   opt.search.kind = co::parse_search_kind(a.search);
@@ -214,9 +347,9 @@ void run(const CoordArgs& a) {
       {"agents", js_agents}};
   if (!a.out.empty()) {
     std::filesystem::create_directories(a.out);
-    co::Schedule s{agents, r.delays, opt.map.at_start, opt.map.at_goal, r.valid};
-    co::write_schedule(a.out / "schedule.json", s);
-    co::write_schedule(a.out / "schedule.yaml", s);
+    write_schedules(
+        sc, co::Schedule{agents, r.delays, opt.map.at_start, opt.map.at_goal, r.valid, {}, {}},
+        a.out);
     draw_trajectories(sc, agents, a.out / "trajectories.png");
     if (ok) {
       draw_network(co::build_network(agents, opt.map), r, agents, a.out / "network.png");
@@ -260,7 +393,23 @@ void setup(CLI::App& app) {
   cmd->add_option("--radius", a->radius, "robot radius for MAPF input [cells]")
       ->check(positive())
       ->capture_default_str();
-  cmd->add_option("--search", a->search, "none | exhaustive | edf | ga")->capture_default_str();
+  cmd->add_option("--method", a->method,
+                  "delays (seed 002: start delays on fixed paths) | sipp (prioritized SIPP)")
+      ->capture_default_str();
+  cmd->add_option("--search", a->search,
+                  "none | exhaustive | edf | ga (delays only; sipp uses --order)")
+      ->capture_default_str();
+  cmd->add_option("--order", a->order,
+                  "sipp: priority order edf | index | shortest-first | longest-first | best "
+                  "(best: all of them, keep the best by --objective)")
+      ->capture_default_str();
+  cmd->add_flag("--cross-goals", a->cross_goals,
+                "sipp: do not try to keep off the goals of robots planned later first");
+  cmd->add_option("--objective", a->objective, "sipp --order best: makespan | sum")
+      ->capture_default_str();
+  cmd->add_option("--max-restarts", a->max_restarts,
+                  "sipp: failed-robot-first restarts (-1 = number of robots)")
+      ->capture_default_str();
   cmd->add_flag("--no-reduction", a->no_reduction,
                 "search all robots, not only the EDF urgent group");
   cmd->add_option("--seed", a->seed, "GA seed")->check(non_negative())->capture_default_str();

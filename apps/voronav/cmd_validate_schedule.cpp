@@ -8,6 +8,7 @@
 #include "command.hpp"
 #include "voronav/coordination/schedule_io.hpp"
 #include "voronav/coordination/verify.hpp"
+#include "voronav/io/map_loader.hpp"
 
 namespace voronav::cli {
 namespace {
@@ -26,14 +27,26 @@ void run(const ValidateArgs& a) {
   vo.at_start = s.at_start;
   vo.at_goal = s.at_goal;
   vo.tolerance = a.tolerance;
-  const co::Verification v = co::verify_schedule(s.agents, s.delays, vo);
-  double makespan = 0.0;
-  for (std::size_t i = 0; i < s.agents.size(); ++i) {
-    makespan = std::max(makespan, s.delays[i] + s.agents[i].path.travel_time());
+  const std::vector<co::Trajectory> tr = co::trajectories(s);
+  std::vector<double> radii;
+  for (const auto& ag : s.agents)
+    radii.push_back(ag.radius);
+  co::Verification v = co::verify_trajectories(tr, radii, vo.tolerance);
+  std::string map_checked;
+  if (!s.map.empty()) {
+    // The map named by the schedule, relative to the schedule file.
+    std::filesystem::path mp = s.map;
+    if (mp.is_relative()) mp = a.file.parent_path() / mp;
+    const auto loaded = io::load_map(mp);
+    co::check_map(v, tr, radii, binarize(loaded.grid), vo.tolerance);
+    map_checked = mp.string();
   }
   // At most kShown conflicts (the earliest) are printed; conflict_count has them all, so a
   // thousand identical robots do not print half a million lines.
   constexpr std::size_t kShown = 100;
+  double makespan = 0.0;
+  for (const auto& t : tr)
+    makespan = std::max(makespan, t.end_time());
   nlohmann::json conflicts = nlohmann::json::array();
   for (const auto& c : v.conflicts) {
     if (conflicts.size() == kShown) break;
@@ -44,15 +57,25 @@ void run(const ValidateArgs& a) {
                          {"radii", s.agents[static_cast<std::size_t>(c.a)].radius +
                                        s.agents[static_cast<std::size_t>(c.b)].radius}});
   }
+  nlohmann::json walls = nlohmann::json::array();
+  for (const auto& h : v.wall_hits) {
+    walls.push_back({{"robot", s.agents[static_cast<std::size_t>(h.robot)].id},
+                     {"time", h.time},
+                     {"cell", {h.cell.x, h.cell.y}},
+                     {"distance", h.distance}});
+  }
   if (a.json) {
-    print_json({{"valid", v.valid},
-                {"agents", s.agents.size()},
-                {"makespan", makespan},
-                {"conflicts", conflicts},
-                {"conflict_count", v.conflicts.size()},
-                {"undecided_pairs", v.undecided_pairs},
-                {"min_clearance", std::isfinite(v.min_clearance) ? nlohmann::json(v.min_clearance)
-                                                                 : nlohmann::json(nullptr)}});
+    print_json(
+        {{"valid", v.valid},
+         {"map", map_checked.empty() ? nlohmann::json(nullptr) : nlohmann::json(map_checked)},
+         {"wall_hits", walls},
+         {"agents", s.agents.size()},
+         {"makespan", makespan},
+         {"conflicts", conflicts},
+         {"conflict_count", v.conflicts.size()},
+         {"undecided_pairs", v.undecided_pairs},
+         {"min_clearance", std::isfinite(v.min_clearance) ? nlohmann::json(v.min_clearance)
+                                                          : nlohmann::json(nullptr)}});
   } else {
     std::cout << a.file.string() << ": " << s.agents.size() << " robots, makespan " << makespan
               << " s: " << (v.valid ? "valid" : "INVALID") << "\n";
@@ -61,6 +84,8 @@ void run(const ValidateArgs& a) {
     if (v.conflicts.size() > conflicts.size())
       std::cout << "  ... and " << v.conflicts.size() - conflicts.size()
                 << " more overlapping pairs\n";
+    for (const auto& w : walls)
+      std::cout << "  wall " << w.dump() << "\n";
   }
   if (!v.valid) exit_code() = 1;
 }

@@ -129,20 +129,26 @@ void check_order(std::span<const int> order, int n) {
   }
 }
 
-Resolution resolve(const MdNetwork& net, std::span<const int> order,
-                   std::span<const double> min_delays) {
+namespace {
+
+/// resolve() starting at position `from` with the delays of order[0..from) taken from `base`;
+/// stops (cut = true) as soon as a completion time exceeds `cutoff`.
+Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
+                        std::span<const double> min_delays, const Resolution* base, int from,
+                        double cutoff) {
   const int n = net.size();
-  check_order(order, n);
-  if (!min_delays.empty() && static_cast<int>(min_delays.size()) != n) {
-    throw Error("min_delays", 0, "expected one delay per robot");
-  }
   Resolution r;
   r.delays.assign(static_cast<std::size_t>(n), 0.0);
   r.completion.assign(static_cast<std::size_t>(n), 0.0);
   std::vector<int> rank(static_cast<std::size_t>(n), 0);
   for (int p = 0; p < n; ++p)
     rank[static_cast<std::size_t>(order[static_cast<std::size_t>(p)])] = p;
-  for (int p = 0; p < n; ++p) {
+  for (int p = 0; p < from; ++p) {
+    const auto i = static_cast<std::size_t>(order[static_cast<std::size_t>(p)]);
+    r.delays[i] = base->delays[i];
+    r.completion[i] = base->completion[i];
+  }
+  for (int p = from; p < n; ++p) {
     const int i = order[static_cast<std::size_t>(p)];
     double delay =
         min_delays.empty() ? 0.0 : std::max(0.0, min_delays[static_cast<std::size_t>(i)]);
@@ -170,6 +176,12 @@ Resolution resolve(const MdNetwork& net, std::span<const int> order,
     r.completion[static_cast<std::size_t>(i)] =
         net.travel_times()[static_cast<std::size_t>(i)] + delay;
     if (r.status != ResolveStatus::kOk) break;
+    if (r.completion[static_cast<std::size_t>(i)] > cutoff) {
+      r.cut = true;
+      r.makespan = kInfinity;
+      r.sum_of_arrivals = kInfinity;
+      return r;
+    }
   }
   r.makespan = 0.0;
   r.sum_of_arrivals = 0.0;
@@ -182,6 +194,25 @@ Resolution resolve(const MdNetwork& net, std::span<const int> order,
     r.sum_of_arrivals = kInfinity;
   }
   return r;
+}
+
+}  // namespace
+
+Resolution resolve(const MdNetwork& net, std::span<const int> order,
+                   std::span<const double> min_delays) {
+  const int n = net.size();
+  check_order(order, n);
+  if (!min_delays.empty() && static_cast<int>(min_delays.size()) != n) {
+    throw Error("min_delays", 0, "expected one delay per robot");
+  }
+  return resolve_impl(net, order, min_delays, nullptr, 0, kInfinity);
+}
+
+Resolution resolve_incremental(const MdNetwork& net, std::span<const int> order,
+                               const Resolution& base, int from, double cutoff) {
+  if (base.status != ResolveStatus::kOk || base.delays.size() != order.size() || from <= 0)
+    return resolve_impl(net, order, {}, nullptr, 0, cutoff);
+  return resolve_impl(net, order, {}, &base, std::min<int>(from, net.size()), cutoff);
 }
 
 std::vector<OrientedArc> network_for_order(const MdNetwork& net, std::span<const int> order,

@@ -87,12 +87,21 @@ struct Resolution {
   double sum_of_arrivals = 0.0;
   int blocked = -1;     ///< with kNoDelaySchedule: the robot that cannot be delayed out of it
   int blocked_by = -1;  ///< ... and the higher-priority robot of that arc
+  bool cut = false;     ///< resolve_incremental stopped early (makespan above the cutoff)
 };
 
 /// Resolves `order` (a permutation of 0..N-1, highest priority first). `min_delays`, when given,
 /// are lower bounds on the delays (used to repair conflicts the boxes missed).
 [[nodiscard]] Resolution resolve(const MdNetwork& net, std::span<const int> order,
                                  std::span<const double> min_delays = {});
+
+/// Incremental resolve() for the GA's 3-opt (issue #16): `base` is the resolution of an order
+/// whose first `from` entries equal `order`'s, so their delays are reused (a robot's delay depends
+/// only on the robots above it). Stops as soon as some completion time exceeds `cutoff`
+/// (Resolution::cut, makespan infinity): such an order cannot beat one of makespan <= cutoff.
+/// Otherwise the result equals resolve(net, order) exactly.
+[[nodiscard]] Resolution resolve_incremental(const MdNetwork& net, std::span<const int> order,
+                                             const Resolution& base, int from, double cutoff);
 
 /// An arc of the network of a given order: from `high` to `low`, (M, D) after the delays.
 struct OrientedArc {

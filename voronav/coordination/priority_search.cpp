@@ -279,6 +279,17 @@ class Ga {
     return resolve(net_, order);
   }
 
+  Resolution evaluate_from(const std::vector<int>& seq, const Resolution& base, int from,
+                           double cutoff) {
+    ++evaluations_;
+    std::vector<int> order;
+    order.reserve(seq.size() + suffix_.size());
+    for (const int l : seq)
+      order.push_back(searched_[static_cast<std::size_t>(l)]);
+    order.insert(order.end(), suffix_.begin(), suffix_.end());
+    return resolve_incremental(net_, order, base, from, cutoff);
+  }
+
   int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
   double unit() { return std::uniform_real_distribution<double>(0.0, 1.0)(rng_); }
 
@@ -403,8 +414,10 @@ class Ga {
       cand.assign(rest.begin(), rest.begin() + k);
       cand.insert(cand.end(), ind.seq.begin() + i, ind.seq.begin() + j + 1);
       cand.insert(cand.end(), rest.begin() + k, rest.end());
-      Resolution r = evaluate(cand);
-      if (better(r, ind.res)) {
+      // Positions before min(i, k) keep their robots: reuse their delays, and stop as soon as
+      // the candidate's makespan exceeds the current one (it cannot be better then).
+      Resolution r = evaluate_from(cand, ind.res, std::min(i, k), ind.res.makespan + kEps);
+      if (!r.cut && better(r, ind.res)) {
         ind.seq = cand;
         ind.res = std::move(r);
       }

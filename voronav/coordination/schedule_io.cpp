@@ -41,7 +41,8 @@ nlohmann::json to_json(const Schedule& s) {
     nlohmann::json path = nlohmann::json::array();
     for (const Vec2 p : a.path.nodes())
       path.push_back({p.x, p.y});
-    const double arrival = s.delays[i] + a.path.travel_time();
+    const bool timed = i < s.waypoints.size() && !s.waypoints[i].empty();
+    const double arrival = timed ? s.waypoints[i].back().t : s.delays[i] + a.path.travel_time();
     makespan = std::max(makespan, arrival);
     sum += arrival;
     nlohmann::json j = {
@@ -49,16 +50,24 @@ nlohmann::json to_json(const Schedule& s) {
         {"delay", s.delays[i]}, {"arrival", arrival}, {"path", path}};
     j["a_max"] = std::isinf(a.path.limits().a_max) ? nlohmann::json(nullptr)
                                                    : nlohmann::json(a.path.limits().a_max);
+    if (timed) {
+      nlohmann::json w = nlohmann::json::array();
+      for (const TimedWaypoint& p : s.waypoints[i])
+        w.push_back({p.t, p.p.x, p.p.y});
+      j["waypoints"] = w;
+    }
     agents.push_back(j);
   }
-  return {{"format", "voronav-schedule"},
-          {"version", 1},
-          {"at_start", to_string(s.at_start)},
-          {"at_goal", to_string(s.at_goal)},
-          {"makespan", makespan},
-          {"sum_of_arrivals", sum},
-          {"valid", s.valid},
-          {"agents", agents}};
+  nlohmann::json out = {{"format", "voronav-schedule"},
+                        {"version", 1},
+                        {"at_start", to_string(s.at_start)},
+                        {"at_goal", to_string(s.at_goal)},
+                        {"makespan", makespan},
+                        {"sum_of_arrivals", sum},
+                        {"valid", s.valid},
+                        {"agents", agents}};
+  if (!s.map.empty()) out["map"] = s.map;
+  return out;
 }
 
 void emit(YAML::Emitter& out, const nlohmann::json& j) {
@@ -136,6 +145,12 @@ Schedule parse_schedule(const std::string& text, const std::string& source) {
     throw Error(source, 0, e.source() + ": " + e.reason());
   }
   if (root["valid"] && root["valid"].IsScalar()) s.valid = root["valid"].as<bool>(false);
+  if (root["map"]) {
+    if (!root["map"].IsScalar())
+      throw Error(source, line_of(root["map"]), "map: expected a file name");
+    s.map = root["map"].Scalar();
+  }
+  bool any_timed = false;
   const YAML::Node agents = root["agents"];
   if (!agents || !agents.IsSequence()) throw Error(source, line_of(root), "missing 'agents' list");
   for (const auto& a : agents) {
@@ -148,6 +163,22 @@ Schedule parse_schedule(const std::string& text, const std::string& source) {
     const int id = static_cast<int>(id_value);
     const std::string who = "agent " + std::to_string(id);
     const YAML::Node path = a["path"];
+    std::vector<TimedWaypoint> timed;
+    if (const YAML::Node w = a["waypoints"]; w) {
+      if (!w.IsSequence() || w.size() == 0)
+        throw Error(source, line_of(w), who + ": waypoints: expected a list of [t, x, y]");
+      for (const auto& p : w) {
+        if (!p.IsSequence() || p.size() != 3)
+          throw Error(source, line_of(p), who + ": waypoint: expected [t, x, y]");
+        timed.push_back({number(p[0], who + " waypoint t"),
+                         {number(p[1], who + " waypoint x"), number(p[2], who + " waypoint y")}});
+        if (timed.size() > 1 && !(timed.back().t > timed[timed.size() - 2].t))
+          throw Error(source, line_of(p), who + ": waypoint times must increase strictly");
+      }
+      if (!(timed.front().t >= 0.0) || !std::isfinite(timed.back().t))
+        throw Error(source, line_of(w), who + ": waypoint times must be finite and >= 0");
+      any_timed = true;
+    }
     if (!path || !path.IsSequence() || path.size() == 0) {
       throw Error(source, line, who + ": missing 'path' (a list of [x, y])");
     }
@@ -172,7 +203,9 @@ Schedule parse_schedule(const std::string& text, const std::string& source) {
       throw Error(source, line, who + ": " + e.source() + ": " + e.reason());
     }
     s.delays.push_back(delay);
+    s.waypoints.push_back(std::move(timed));
   }
+  if (!any_timed) s.waypoints.clear();
   return s;
 }
 
@@ -189,6 +222,18 @@ void write_schedule(const std::filesystem::path& path, const Schedule& s) {
   std::ofstream f(path);
   f << text;
   if (!f) throw Error(path.string(), 0, "cannot write the file");
+}
+
+std::vector<Trajectory> trajectories(const Schedule& s) {
+  std::vector<Trajectory> out;
+  for (std::size_t i = 0; i < s.agents.size(); ++i) {
+    if (i < s.waypoints.size() && !s.waypoints[i].empty()) {
+      out.push_back(trajectory_of(s.waypoints[i], s.at_start, s.at_goal));
+    } else {
+      out.push_back(trajectory_of(s.agents[i].path, s.delays[i], s.at_start, s.at_goal));
+    }
+  }
+  return out;
 }
 
 Schedule read_schedule(const std::filesystem::path& path) {

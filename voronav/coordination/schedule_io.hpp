@@ -7,13 +7,17 @@
 //    "agents": [{"id": 1, "radius": 0.5, "v_max": 1.0, "a_max": null, "delay": 0.0,
 //                "arrival": 20.0, "path": [[-10, 0], [10, 0]]}, ...]}
 // a_max null = instantaneous acceleration.
+// SIPP schedules give each agent "waypoints": [[t, x, y], ...] (constant velocity between them,
+// equal points = a wait) instead of moving along "path" after "delay"; "path" is then the
+// geometric path and "delay" the first waypoint's time (informative). An optional "map" names the
+// map file (relative to the schedule file) that validate-schedule checks the discs against.
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "voronav/coordination/timed_path.hpp"
+#include "voronav/coordination/trajectory.hpp"
 
 namespace voronav::coordination {
 
@@ -23,7 +27,13 @@ struct Schedule {
   AtStart at_start = AtStart::kWait;
   AtGoal at_goal = AtGoal::kStay;
   bool valid = false;  ///< what the writer claimed (informative; re-check with verify_schedule)
+  /// Per agent timed waypoints (SIPP); empty = every agent follows its path after its delay.
+  std::vector<std::vector<TimedWaypoint>> waypoints;
+  std::string map;  ///< map file as written in the schedule (empty = none)
 };
+
+/// Every agent's trajectory under the schedule's presence conventions.
+[[nodiscard]] std::vector<Trajectory> trajectories(const Schedule& s);
 
 [[nodiscard]] std::string schedule_to_json(const Schedule& s);
 [[nodiscard]] std::string schedule_to_yaml(const Schedule& s);

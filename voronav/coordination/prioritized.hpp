@@ -1,0 +1,103 @@
+// Prioritized planning with SIPP (issue #21): robots are planned one after the other in a priority
+// order, each with SIPP (sipp.hpp) against the trajectories of the robots planned before it
+// (Erdmann & Lozano-Perez 1987; Silver 2005 for the grid version). Prioritized planning is
+// incomplete: a robot can fail because a higher-priority robot parks on its only way, passes its
+// start before it can leave, or crosses its goal after it would arrive. The fallback here is the
+// classic restart rule: the robot that failed moves to the top of the order and every robot is
+// planned again, at most max_restarts times (each restart is reported). PBS (Ma et al. 2019) is
+// not implemented; see docs/coordination.md. Before that, each robot first tries to keep off the
+// starts (with --at-start wait) and goals (with --at-goal stay) of the robots not planned yet, as
+// stationary discs, and plans without them only when that fails (the same rule as the fixed-path
+// planner of seed 002's scenario, scenario.hpp); `soft_fallbacks` counts those robots.
+//
+// coordinate_sipp(): the priority order comes from the paper's machinery (seed 002): the (M,D)
+// network of the robots' fixed paths and its Bottom-level EDF order (section 4.1), or the index
+// order; then prioritized SIPP; then the same continuous-time checker as the delay schedules.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "voronav/coordination/coordinator.hpp"
+#include "voronav/coordination/sipp.hpp"
+
+namespace voronav::coordination {
+
+struct SippRobot {
+  int id = 0;
+  Cell start, goal;
+  double radius = 0.5;  ///< [m]
+  double v_max = 1.0;   ///< [m/s]
+};
+
+enum class Objective { kMakespan, kSumOfArrivals };
+
+struct PrioritizedOptions {
+  SippOptions sipp;
+  int max_restarts = -1;        ///< -1 = the number of robots
+  bool avoid_unplanned = true;  ///< keep off the starts/goals of robots not planned yet if possible
+  /// First tier avoids unplanned starts for all time (true) or only while they get away (false).
+  bool full_starts = false;
+  /// First tier avoids unplanned goals (with --at-goal stay) for all time.
+  bool avoid_goals = true;
+};
+
+struct PrioritizedResult {
+  bool ok = false;
+  std::vector<std::vector<TimedWaypoint>> plans;  ///< per robot (by index)
+  std::vector<int> order;                         ///< the order that succeeded (or the last tried)
+  int restarts = 0;                               ///< failed-robot-first restarts used
+  int failed = -1;                                ///< robot index that failed last (when !ok)
+  std::vector<int> failures;                      ///< the robot that failed, per attempt
+  std::vector<double> arrivals;                   ///< per robot [s]
+  double makespan = 0.0, sum_of_arrivals = 0.0;
+  std::size_t expansions = 0;
+  int soft_fallbacks = 0;  ///< robots that had to cross an unplanned robot's start or goal
+};
+
+/// `blocked`: the raw map (1 = blocked); it is inflated per robot radius.
+[[nodiscard]] PrioritizedResult plan_prioritized(const BinaryGrid& blocked,
+                                                 const std::vector<SippRobot>& robots,
+                                                 std::vector<int> order,
+                                                 const PrioritizedOptions& options = {});
+
+/// Where the priority order comes from: the EDF order of the (M,D) network (seed 002, section
+/// 4.1), the index order, the robots by increasing or decreasing shortest travel time, or all of
+/// them, keeping the best by the objective.
+enum class OrderRule { kEdf, kIndex, kShortestFirst, kLongestFirst, kBest };
+[[nodiscard]] OrderRule parse_order_rule(const std::string& s);
+[[nodiscard]] const char* to_string(OrderRule r);
+
+struct SippCoordinateOptions {
+  CollisionMapOptions map;  ///< at-start / at-goal, node spacing for the (M,D) network
+  OrderRule order = OrderRule::kEdf;
+  Objective objective = Objective::kMakespan;  ///< used by kBest (ties: the other one)
+  PrioritizedOptions planning;
+  double tolerance = 1e-6;  ///< checker tolerance [m]
+};
+
+struct SippCoordinationResult {
+  PrioritizedResult plan;
+  std::vector<Trajectory> trajectories;  ///< per robot, under the presence conventions
+  Verification verification;
+  bool valid = false;
+  std::string order_source;  ///< the rule that gave the returned order
+  double order_ms = 0.0, plan_ms = 0.0, verify_ms = 0.0, time_ms = 0.0;
+  std::string message;
+};
+
+/// Robots from `agents` (start = first path node, goal = last, in `blocked`'s cells).
+[[nodiscard]] SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked,
+                                                     const std::vector<Agent>& agents,
+                                                     const SippCoordinateOptions& options = {});
+
+/// Lower bounds: each robot's shortest 8-connected travel time on the map inflated by its radius
+/// (A*), ignoring the others; makespan bound = their max, sum bound = their sum.
+struct IndividualBounds {
+  std::vector<double> travel;  ///< [s] per robot
+  double makespan = 0.0, sum = 0.0;
+};
+[[nodiscard]] IndividualBounds individual_bounds(const BinaryGrid& blocked,
+                                                 const std::vector<Agent>& agents);
+
+}  // namespace voronav::coordination
