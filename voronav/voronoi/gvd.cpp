@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <unordered_map>
 
 #include "voronav/core/error.hpp"
 #include "voronav/voronoi/internal/skeleton.hpp"
@@ -122,8 +123,9 @@ DynamicGvd::DynamicGvd(const BinaryGrid& blocked, const GvdOptions& options)
   raw_.assign(n, 0);
   visit_.assign(n, -1);
   mark_.assign(n, 0);
+  d2_changed_.assign(n, 0);
   for (int x = 0; x < pw_; ++x)
-    column_pass(x, nullptr);
+    column_pass(x, nullptr, {-1, -1});
   for (int y = 0; y < ph_; ++y)
     row_pass(y);
   max_d2_ = 0;
@@ -135,17 +137,41 @@ DynamicGvd::DynamicGvd(const BinaryGrid& blocked, const GvdOptions& options)
   build_skeleton();
 }
 
-void DynamicGvd::column_pass(int x, std::vector<int>* changed_rows) {
-  // 1-D nearest site along the column: forward then backward scan (ties: the lower row).
+void DynamicGvd::grow_span(std::unordered_map<int, std::pair<int, int>>& spans,
+                           std::size_t i) const {
+  const int x = static_cast<int>(i % static_cast<std::size_t>(pw_));
+  const int y = static_cast<int>(i / static_cast<std::size_t>(pw_));
+  auto [it, fresh] = spans.try_emplace(x, y, y);
+  if (!fresh) {
+    it->second.first = std::min(it->second.first, y);
+    it->second.second = std::max(it->second.second, y);
+  }
+}
+
+void DynamicGvd::column_pass(int x, std::vector<int>* changed_rows, std::pair<int, int> span) {
+  // 1-D nearest site along the column: forward then backward scan (ties: the lower row). Only
+  // the rows between the nearest obstacles outside the changed span can change: those obstacles
+  // shield the rest of the column.
+  int y0 = 0, y1 = ph_ - 1;
+  if (span.first >= 0) {
+    y0 = span.first;
+    while (y0 > 0 && state_[pidx(x, y0 - 1)] != kBlockedCell)
+      --y0;
+    y0 = std::max(0, y0 - 1);
+    y1 = span.second;
+    while (y1 < ph_ - 1 && state_[pidx(x, y1 + 1)] != kBlockedCell)
+      ++y1;
+    y1 = std::min(ph_ - 1, y1 + 1);
+  }
   std::int32_t last = -1;
   static thread_local std::vector<std::int32_t> below;
   below.resize(static_cast<std::size_t>(ph_));
-  for (int y = 0; y < ph_; ++y) {
+  for (int y = y0; y <= y1; ++y) {
     if (state_[pidx(x, y)] == kBlockedCell) last = y;
     below[static_cast<std::size_t>(y)] = last;
   }
   std::int32_t above = -1;
-  for (int y = ph_ - 1; y >= 0; --y) {
+  for (int y = y1; y >= y0; --y) {
     if (state_[pidx(x, y)] == kBlockedCell) above = y;
     const std::int32_t b = below[static_cast<std::size_t>(y)];
     std::int32_t best = -1;
@@ -207,6 +233,7 @@ void DynamicGvd::row_segment(int y, int xa, int xb, std::vector<std::size_t>* ch
     const std::int32_t s = ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_[pidx(ax, y)]));
     if (d2_[i] == d[k] && site_[i] == s) continue;
     changed->push_back(i);
+    if (d2_[i] != d[k]) d2_changed_[i] = 1;
     d2_[i] = d[k];
     site_[i] = s;
   }
@@ -547,15 +574,21 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
   stats.changed_cells = added.size() + removed.size();
   if (stats.changed_cells == 0) return stats;
 
-  // Distance field: recompute the touched columns, then in each row whose column data changed
-  // the segments that can see a changed column.
+  // Distance field: recompute the touched columns between the nearest obstacles above and below
+  // the changed cells, then in each row whose column data changed the segments that can see a
+  // changed column.
   std::sort(columns.begin(), columns.end());
   columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+  std::unordered_map<int, std::pair<int, int>> column_rows;  // column -> changed row span
+  for (const std::size_t i : added)
+    grow_span(column_rows, i);
+  for (const std::size_t i : removed)
+    grow_span(column_rows, i);
   std::vector<std::pair<int, int>> row_cols;  // (row, column) whose column data changed
   std::vector<int> rows;
   for (const int x : columns) {
     rows.clear();
-    column_pass(x, &rows);
+    column_pass(x, &rows, column_rows[x]);
     for (const int y : rows)
       row_cols.emplace_back(y, x);
   }
@@ -646,7 +679,10 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
   // Thinning and pruning, replayed where their input or the clearance changed.
   std::vector<std::size_t> keys;
   for (const std::size_t c : changed)
-    keys.push_back(c);  // distance or site changed (a superset of the key changes is fine)
+    if (d2_changed_[c]) {
+      keys.push_back(c);
+      d2_changed_[c] = 0;
+    }
   if (!thins_.empty()) {
     deltas = thins_[0].update(raw_, deltas, d2_, keys, &stats.skeleton_work);
     for (std::size_t k = 0; k < prunes_.size(); ++k) {
@@ -656,6 +692,8 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     }
   }
   stats.changed_diagram = deltas.size();
+  for (const auto& t : thins_)
+    stats.thinning_steps = std::max(stats.thinning_steps, t.steps());
   return stats;
 }
 

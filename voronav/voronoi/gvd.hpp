@@ -40,6 +40,8 @@
 
 #include <cstdint>
 #include <span>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "voronav/core/grid_map.hpp"
@@ -114,6 +116,7 @@ struct GvdUpdateStats {
   std::size_t changed_raw = 0;        ///< cells whose raw Voronoi mark changed
   std::size_t skeleton_work = 0;      ///< cells the local re-thinning and re-pruning examined
   std::size_t changed_diagram = 0;    ///< cells of the final diagram that changed
+  int thinning_steps = 0;             ///< steps of the longest stored thinning run
 };
 
 class DynamicGvd {
@@ -139,7 +142,10 @@ class DynamicGvd {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(pw_) +
            static_cast<std::size_t>(x);
   }
-  void column_pass(int x, std::vector<int>* changed_rows);
+  // Column x from scratch (span {-1, -1}) or around the changed rows span (the rows between
+  // the nearest obstacles outside it); appends the rows whose column data changed.
+  void column_pass(int x, std::vector<int>* changed_rows, std::pair<int, int> span);
+  void grow_span(std::unordered_map<int, std::pair<int, int>>& spans, std::size_t i) const;
   void row_pass(int y);
   // Recomputes the cells [xa, xb] of row y exactly from the column data (window of columns
   // bounded by the unchanged cells xa-1 and xb+1); appends the cells that changed.
@@ -171,6 +177,7 @@ class DynamicGvd {
   std::int64_t max_d2_ = 0;               // >= every finite squared distance
   std::vector<std::int32_t> visit_;       // scratch of the split search (-1)
   std::vector<std::uint8_t> mark_;        // scratch marks (0)
+  std::vector<std::uint8_t> d2_changed_;  // scratch of update(): the distance changed (0)
   std::vector<std::uint8_t> raw_;
   std::vector<internal::ParallelThinning> thins_;  // thin, then (prune, thin) per round
   std::vector<internal::ParallelPruning> prunes_;

@@ -107,11 +107,15 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
     }
     const int sf = t & 3;
     cand.clear();
+    // The cells of the current subfield in the 3x3 neighbourhood of c.
     auto add_around = [&](std::size_t c) {
-      for (std::ptrdiff_t dy = -1; dy <= 1; ++dy)
-        for (std::ptrdiff_t dx = -1; dx <= 1; ++dx) {
+      const auto cx = static_cast<std::ptrdiff_t>(c) % w, cy = static_cast<std::ptrdiff_t>(c) / w;
+      const std::ptrdiff_t fx = (cx & 1) == (sf & 1) ? 0 : -1;
+      const std::ptrdiff_t fy = (cy & 1) == ((sf >> 1) & 1) ? 0 : -1;
+      for (std::ptrdiff_t dy = fy; dy <= 1; dy += 2)
+        for (std::ptrdiff_t dx = fx; dx <= 1; dx += 2) {
           const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + dy * w + dx);
-          if (!in[j] || subfield(j) != sf || seen_[j] == epoch_) continue;
+          if (!in[j] || seen_[j] == epoch_) continue;
           seen_[j] = epoch_;
           cand.push_back(j);
         }
@@ -203,18 +207,20 @@ void ParallelPruning::build(const std::vector<std::uint8_t>& in,
                             const std::vector<std::int64_t>& d2, double max_len) {
   d2_ = &d2;
   const std::size_t n = in.size();
-  cover_.assign(n, 0);
+  owner_.assign(n, -1);
+  seen_.assign(n, 0);
+  epoch_ = 0;
   spurs_.clear();
   std::vector<std::size_t> path;
   for (std::size_t c = 0; c < n; ++c) {
     if (!in[c] || skeleton_degree(in, r_, c) != 1 || !walk(in, c, max_len, path)) continue;
     for (const std::size_t p : path)
-      ++cover_[p];
+      owner_[p] = static_cast<std::int64_t>(c);
     spurs_.emplace(c, path);
   }
   out_.assign(n, 0);
   for (std::size_t c = 0; c < n; ++c)
-    out_[c] = in[c] && cover_[c] == 0 ? 1 : 0;
+    out_[c] = in[c] && owner_[c] < 0 ? 1 : 0;
 }
 
 std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
@@ -223,59 +229,83 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
                                            const std::vector<std::size_t>& key_changes,
                                            double max_len, std::size_t* work) {
   d2_ = &d2;
-  const auto w = static_cast<std::size_t>(r_.width);
-  int x0 = r_.width, y0 = r_.height, x1 = -1, y1 = -1;
-  auto grow = [&](std::size_t c) {
-    const int x = static_cast<int>(c % w), y = static_cast<int>(c / w);
-    x0 = std::min(x0, x);
-    x1 = std::max(x1, x);
-    y0 = std::min(y0, y);
-    y1 = std::max(y1, y);
-  };
+  std::vector<std::size_t> dirty;
   for (const Delta& d : in_changes)
-    grow(d.cell);
-  for (const std::size_t k : key_changes)
-    if (in[k]) grow(k);
-  if (x1 < 0) return {};
-  // A spur whose end lies farther than the longest possible spur (+ its 3x3 reads) is unchanged.
-  const int m = static_cast<int>(std::ceil(max_len)) + 2;
-  x0 = std::max(1, x0 - m);
-  y0 = std::max(1, y0 - m);
-  x1 = std::min(r_.width - 2, x1 + m);
-  y1 = std::min(r_.height - 2, y1 + m);
-  std::vector<std::size_t> touched;
-  for (int y = y0; y <= y1; ++y)
-    for (int x = x0; x <= x1; ++x) {
-      const std::size_t c = static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x);
-      if (!cover_[c]) continue;
-      const auto it = spurs_.find(c);
-      if (it == spurs_.end()) continue;
+    dirty.push_back(d.cell);
+  for (const std::size_t k : key_changes)  // the clearance matters at junctions only
+    if (in[k] && skeleton_degree(in, r_, k) >= 3) dirty.push_back(k);
+  if (dirty.empty()) return {};
+  const auto w = static_cast<std::ptrdiff_t>(r_.width);
+  const auto h = static_cast<std::ptrdiff_t>(r_.height);
+  // The cells within 2 of a dirty cell (a spur's decision reads its path, its junction and
+  // their 3x3 neighbourhoods; the junction touches the path).
+  auto around = [&](std::size_t c, auto&& f) {
+    const auto x = static_cast<std::ptrdiff_t>(c) % w, y = static_cast<std::ptrdiff_t>(c) / w;
+    for (std::ptrdiff_t yy = std::max<std::ptrdiff_t>(0, y - 2); yy <= std::min(h - 1, y + 2); ++yy)
+      for (std::ptrdiff_t xx = std::max<std::ptrdiff_t>(0, x - 2); xx <= std::min(w - 1, x + 2);
+           ++xx)
+        f(static_cast<std::size_t>(yy * w + xx));
+  };
+  // 1. Undo the stored spurs that pass near a dirty cell.
+  std::vector<std::size_t> touched, candidates;
+  for (const std::size_t d : dirty)
+    around(d, [&](std::size_t c) {
+      if (owner_[c] < 0) return;
+      const auto e = static_cast<std::size_t>(owner_[c]);
+      const auto it = spurs_.find(e);
       for (const std::size_t p : it->second) {
-        --cover_[p];
+        owner_[p] = -1;
         touched.push_back(p);
       }
       spurs_.erase(it);
+      candidates.push_back(e);
+    });
+  // 2. The ends whose spur may pass near a dirty cell now: walk out from the set cells near the
+  // dirty ones through cells of at most two neighbours, no farther than the longest spur.
+  if (++epoch_ == 0) {
+    std::fill(seen_.begin(), seen_.end(), 0U);
+    epoch_ = 1;
+  }
+  std::vector<std::pair<std::size_t, int>> queue;
+  for (const std::size_t d : dirty)
+    around(d, [&](std::size_t c) {
+      if (!in[c] || seen_[c] == epoch_) return;
+      seen_[c] = epoch_;
+      queue.emplace_back(c, 0);
+    });
+  const int max_depth = static_cast<int>(std::ceil(max_len)) + 3;
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const auto [c, depth] = queue[q];
+    if (work) ++*work;
+    const int deg = skeleton_degree(in, r_, c);
+    if (deg == 1) candidates.push_back(c);
+    if ((deg >= 3 && depth > 0) || depth >= max_depth) continue;
+    for (int k = 0; k < 8; ++k) {
+      const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + r_.offset(k));
+      if (!in[j] || seen_[j] == epoch_) continue;
+      seen_[j] = epoch_;
+      queue.emplace_back(j, depth + 1);
     }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   std::vector<std::size_t> path;
-  for (int y = y0; y <= y1; ++y)
-    for (int x = x0; x <= x1; ++x) {
-      const std::size_t c = static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x);
-      if (!in[c]) continue;
-      if (work) ++*work;
-      if (skeleton_degree(in, r_, c) != 1 || !walk(in, c, max_len, path)) continue;
-      for (const std::size_t p : path) {
-        ++cover_[p];
-        touched.push_back(p);
-      }
-      spurs_.emplace(c, path);
+  for (const std::size_t e : candidates) {
+    if (!in[e] || owner_[e] >= 0 || skeleton_degree(in, r_, e) != 1) continue;
+    if (!walk(in, e, max_len, path)) continue;
+    for (const std::size_t p : path) {
+      owner_[p] = static_cast<std::int64_t>(e);
+      touched.push_back(p);
     }
+    spurs_.emplace(e, path);
+  }
   for (const Delta& d : in_changes)
     touched.push_back(d.cell);
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   std::vector<Delta> out;
   for (const std::size_t c : touched) {
-    const std::uint8_t now = in[c] && cover_[c] == 0 ? 1 : 0;
+    const std::uint8_t now = in[c] && owner_[c] < 0 ? 1 : 0;
     if (now == out_[c]) continue;
     out.push_back({c, out_[c]});
     out_[c] = now;

@@ -18,8 +18,10 @@
 // ParallelPruning removes, in one simultaneous round, every spur of its input: the path from an
 // end cell to the first junction (>= 3 neighbours) when shorter than
 // max(min_cells, ratio * clearance(junction)). Every spur is found on the unchanged input, so the
-// order of the ends does not matter; an update redoes the spurs whose end lies within the longest
-// possible spur of a changed cell.
+// order of the ends does not matter (two short spurs at one junction both go). An update redoes
+// the spurs that pass within two cells of a changed cell: the stored ones found through the cells'
+// owner, the new ones by walking out from the changed cells along cells of at most two
+// neighbours to the ends, no farther than the longest possible spur.
 #pragma once
 
 #include <cstddef>
@@ -50,6 +52,8 @@ class ParallelThinning {
                             const std::vector<std::int64_t>& key,
                             const std::vector<std::size_t>& key_changes, std::size_t* work);
   [[nodiscard]] const std::vector<std::uint8_t>& out() const { return out_; }
+  /// Steps of the stored run (>= 1 + its last removal step).
+  [[nodiscard]] int steps() const { return steps_; }
 
  private:
   static constexpr std::int32_t kNever = 0x7fffffff;
@@ -101,8 +105,10 @@ class ParallelPruning {
   double min_cells_ = 0.0;
   double ratio_ = 0.0;
   std::vector<std::uint8_t> out_;
-  std::vector<std::uint8_t> cover_;  // number of pruned spurs through the cell
+  std::vector<std::int64_t> owner_;  // end of the pruned spur through the cell (-1 none)
   std::unordered_map<std::size_t, std::vector<std::size_t>> spurs_;  // end -> removed path
+  std::vector<std::uint32_t> seen_;                                  // scratch of update()
+  std::uint32_t epoch_ = 0;
 };
 
 }  // namespace voronav::voronoi::internal
