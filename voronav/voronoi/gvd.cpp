@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 
 #include "voronav/core/error.hpp"
@@ -148,7 +149,8 @@ void DynamicGvd::grow_span(std::unordered_map<int, std::pair<int, int>>& spans,
   }
 }
 
-void DynamicGvd::column_pass(int x, std::vector<int>* changed_rows, std::pair<int, int> span) {
+void DynamicGvd::column_pass(int x, std::vector<std::pair<int, bool>>* changed_rows,
+                             std::pair<int, int> span) {
   // 1-D nearest site along the column: forward then backward scan (ties: the lower row). Only
   // the rows between the nearest obstacles outside the changed span can change: those obstacles
   // shield the rest of the column.
@@ -181,7 +183,12 @@ void DynamicGvd::column_pass(int x, std::vector<int>* changed_rows, std::pair<in
       best = above;
     const std::int64_t d = best < 0 ? kNone : std::int64_t{y - best} * (y - best);
     const std::size_t i = pidx(x, y);
-    if (changed_rows && (col_d_[i] != d || col_arg_[i] != best)) changed_rows->push_back(y);
+    if (changed_rows && (col_d_[i] != d || col_arg_[i] != best)) {
+      // Lowered: the new (distance, row) is lexicographically smaller and exists.
+      const bool lowered =
+          d >= 0 && (col_d_[i] < 0 || d < col_d_[i] || (d == col_d_[i] && best < col_arg_[i]));
+      changed_rows->emplace_back(y, !lowered);
+    }
     col_d_[i] = d;
     col_arg_[i] = best;
   }
@@ -236,6 +243,35 @@ void DynamicGvd::row_segment(int y, int xa, int xb, std::vector<std::size_t>* ch
     if (d2_[i] != d[k]) d2_changed_[i] = 1;
     d2_[i] = d[k];
     site_[i] = s;
+  }
+}
+
+void DynamicGvd::row_lower(int y, int xa, int xb, const std::vector<int>& cols,
+                           std::vector<std::size_t>* changed) {
+  // Only lowered columns changed in this row: their old sites still exist, so the new nearest
+  // site of a cell is the lexicographic minimum of its old one and the changed columns' sites.
+  const auto w = static_cast<std::size_t>(pw_);
+  for (int x = xa; x <= xb; ++x) {
+    const std::size_t i = pidx(x, y);
+    std::int64_t bd = d2_[i];
+    std::int32_t bs = site_[i];
+    for (const int xc : cols) {
+      const std::size_t ci = pidx(xc, y);
+      if (col_d_[ci] < 0) continue;
+      const std::int64_t dd = std::int64_t{x - xc} * (x - xc) + col_d_[ci];
+      const auto s = static_cast<std::int32_t>(pidx(xc, col_arg_[ci]));
+      bool better = bd < 0 || dd < bd;
+      if (!better && dd == bd && s != bs) {
+        const auto su = static_cast<std::size_t>(s), bu = static_cast<std::size_t>(bs);
+        better = su % w != bu % w ? su % w < bu % w : su / w < bu / w;
+      }
+      if (better) bd = dd, bs = s;
+    }
+    if (bd == d2_[i] && bs == site_[i]) continue;
+    changed->push_back(i);
+    if (bd != d2_[i]) d2_changed_[i] = 1;
+    d2_[i] = bd;
+    site_[i] = bs;
   }
 }
 
@@ -584,22 +620,27 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     grow_span(column_rows, i);
   for (const std::size_t i : removed)
     grow_span(column_rows, i);
-  std::vector<std::pair<int, int>> row_cols;  // (row, column) whose column data changed
-  std::vector<int> rows;
+  std::vector<std::tuple<int, int, bool>> row_cols;  // (row, column, raised) that changed
+  std::vector<std::pair<int, bool>> rows;
   for (const int x : columns) {
     rows.clear();
     column_pass(x, &rows, column_rows[x]);
-    for (const int y : rows)
-      row_cols.emplace_back(y, x);
+    for (const auto& [y, raised] : rows)
+      row_cols.emplace_back(y, x, raised);
   }
   std::sort(row_cols.begin(), row_cols.end());
   std::vector<std::size_t> changed;
   std::vector<std::pair<int, int>> ranges;
+  std::vector<int> lowered_cols;
   for (std::size_t a = 0; a < row_cols.size();) {
-    const int y = row_cols[a].first;
+    const int y = std::get<0>(row_cols[a]);
     ranges.clear();
-    for (; a < row_cols.size() && row_cols[a].first == y; ++a) {
-      const int xc = row_cols[a].second;
+    lowered_cols.clear();
+    bool raised = false;
+    for (; a < row_cols.size() && std::get<0>(row_cols[a]) == y; ++a) {
+      const int xc = std::get<1>(row_cols[a]);
+      raised |= std::get<2>(row_cols[a]);
+      lowered_cols.push_back(xc);
       auto sees = [&](int x) {
         const std::int64_t v = d2_[pidx(x, y)];
         return v < 0 || std::int64_t{x - xc} * (x - xc) <= v;
@@ -621,7 +662,10 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     }
     ranges.resize(m + 1);
     for (const auto& [l, r] : ranges) {
-      row_segment(y, l, r, &changed);
+      if (raised)
+        row_segment(y, l, r, &changed);
+      else
+        row_lower(y, l, r, lowered_cols, &changed);
       stats.row_cells += static_cast<std::size_t>(r - l + 1);
     }
     ++stats.recomputed_rows;
@@ -637,11 +681,14 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
   // Raw diagram: a mark depends on the cell, its 4 neighbours, their sites and site labels.
   std::vector<std::size_t> redo;
   const std::ptrdiff_t offs[5] = {0, 1, -1, pw_, -pw_};
-  auto redo_around = [&](std::size_t c) {
+  auto redo_around = [&](std::size_t c) {  // deduplicated with the mark bit 2
     for (const std::ptrdiff_t off : offs) {
       const std::ptrdiff_t j = static_cast<std::ptrdiff_t>(c) + off;
-      if (j >= 0 && j < static_cast<std::ptrdiff_t>(raw_.size()))
-        redo.push_back(static_cast<std::size_t>(j));
+      if (j < 0 || j >= static_cast<std::ptrdiff_t>(raw_.size())) continue;
+      const auto ju = static_cast<std::size_t>(j);
+      if (mark_[ju] & 2U) continue;
+      mark_[ju] |= 2U;
+      redo.push_back(ju);
     }
   };
   for (const std::size_t c : changed)
@@ -650,7 +697,7 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     // Cells whose site lies in a relabeled component are within the largest distance of it.
     int x0 = pw_, y0 = ph_, x1 = -1, y1 = -1;
     for (const std::size_t c : relabeled) {
-      mark_[c] = 1;
+      mark_[c] |= 1U;
       redo_around(c);
       const int x = static_cast<int>(c % static_cast<std::size_t>(pw_));
       const int y = static_cast<int>(c / static_cast<std::size_t>(pw_));
@@ -660,15 +707,14 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     for (int y = std::max(0, y0 - m); y <= std::min(ph_ - 1, y1 + m); ++y)
       for (int x = std::max(0, x0 - m); x <= std::min(pw_ - 1, x1 + m); ++x) {
         const std::size_t i = pidx(x, y);
-        if (site_[i] >= 0 && mark_[static_cast<std::size_t>(site_[i])]) redo_around(i);
+        if (site_[i] >= 0 && (mark_[static_cast<std::size_t>(site_[i])] & 1U)) redo_around(i);
       }
     for (const std::size_t c : relabeled)
-      mark_[c] = 0;
+      mark_[c] &= static_cast<std::uint8_t>(~1U);
   }
-  std::sort(redo.begin(), redo.end());
-  redo.erase(std::unique(redo.begin(), redo.end()), redo.end());
   std::vector<internal::Delta> deltas;
   for (const std::size_t c : redo) {
+    mark_[c] = 0;
     const std::uint8_t now = raw_mark(c) ? 1 : 0;
     if (now == raw_[c]) continue;
     deltas.push_back({c, raw_[c]});
@@ -678,9 +724,9 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
 
   // Thinning and pruning, replayed where their input or the clearance changed.
   std::vector<std::size_t> keys;
-  for (const std::size_t c : changed)
+  for (const std::size_t c : changed)  // every stage's input is a subset of the raw diagram
     if (d2_changed_[c]) {
-      keys.push_back(c);
+      if (raw_[c]) keys.push_back(c);
       d2_changed_[c] = 0;
     }
   if (!thins_.empty()) {

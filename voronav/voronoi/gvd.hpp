@@ -144,7 +144,13 @@ class DynamicGvd {
   }
   // Column x from scratch (span {-1, -1}) or around the changed rows span (the rows between
   // the nearest obstacles outside it); appends the rows whose column data changed.
-  void column_pass(int x, std::vector<int>* changed_rows, std::pair<int, int> span);
+  // (row, raised) pairs: raised when the new column value is not lexicographically smaller.
+  void column_pass(int x, std::vector<std::pair<int, bool>>* changed_rows,
+                   std::pair<int, int> span);
+  // Row y where only the columns `cols` changed and all were lowered: min of the old site and
+  // the changed columns' sites for the cells [xa, xb].
+  void row_lower(int y, int xa, int xb, const std::vector<int>& cols,
+                 std::vector<std::size_t>* changed);
   void grow_span(std::unordered_map<int, std::pair<int, int>>& spans, std::size_t i) const;
   void row_pass(int y);
   // Recomputes the cells [xa, xb] of row y exactly from the column data (window of columns
