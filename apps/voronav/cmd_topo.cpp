@@ -14,6 +14,7 @@
 #include "voronav/core/error.hpp"
 #include "voronav/io/map_loader.hpp"
 #include "voronav/render/figure.hpp"
+#include "voronav/topology/region_export.hpp"
 #include "voronav/topology/segmentation.hpp"
 #include "voronav/topology/topological_map.hpp"
 #include "voronav/voronoi/labeled_voronoi.hpp"
@@ -22,8 +23,9 @@ namespace voronav::cli {
 namespace {
 
 struct TopoArgs {
-  std::filesystem::path map, out, ground_truth;
+  std::filesystem::path map, out, ground_truth, labels;
   std::string method = "edt";
+  std::string metric = "ipa";
   int free_from = 250;
   double min_region_area = 1.0;
   bool json = false;
@@ -36,6 +38,8 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 void run(const TopoArgs& a) {
   if (a.method != "edt" && a.method != "ca")
     throw Error("--method", 0, "expected edt or ca, got '" + a.method + "'");
+  if (a.metric != "ipa" && a.metric != "intersection")
+    throw Error("--metric", 0, "expected ipa or intersection, got '" + a.metric + "'");
   io::FloorplanOptions fo;
   fo.occupied_below = a.free_from;
   fo.free_from = a.free_from;
@@ -76,28 +80,55 @@ void run(const TopoArgs& a) {
   j["critical_points"] = cps;
   j["regions"] = m.regions.size();
   nlohmann::json nodes = nlohmann::json::array(), edges = nlohmann::json::array();
-  for (const auto& r : m.regions)
+  const auto outlines = topology::region_outlines(m.region, static_cast<int>(m.regions.size()));
+  for (const auto& r : m.regions) {
     nodes.push_back({{"id", r.id},
+                     {"label", r.id + 1},
+                     {"cells", r.cells},
                      {"cell", {r.centre.x, r.centre.y}},
                      {"world", {r.centre_world.x, r.centre_world.y}},
                      {"area_m2", r.area_m2}});
+    // Outline rings in the world frame [m]: outer rings counter-clockwise, holes clockwise.
+    nlohmann::json rings = nlohmann::json::array();
+    for (const auto& ring : outlines[static_cast<std::size_t>(r.id)]) {
+      nlohmann::json pts = nlohmann::json::array();
+      for (const Vec2& p : ring)
+        pts.push_back({p.x, p.y});
+      rings.push_back(pts);
+    }
+    nodes.back()["polygon"] = rings;
+  }
   for (const auto& e : m.edges)
     edges.push_back(
         {{"a", e.a}, {"b", e.b}, {"length_m", e.length_m}, {"critical_point", e.critical_point}});
   j["graph"] = {{"nodes", nodes}, {"edges", edges}};
   if (!a.ground_truth.empty()) {
-    const OccupancyGrid gt = io::load_map(a.ground_truth, fo).grid;
-    if (gt.width() != geo.width || gt.height() != geo.height)
-      throw Error(a.ground_truth.string(), 0, "the ground truth differs in size from the map");
-    // Ground-truth rooms smaller than the region merge area are specks, not rooms.
-    const auto min_cells =
-        static_cast<std::size_t>(a.min_region_area / (geo.resolution * geo.resolution));
-    const auto s =
-        topology::segmentation_scores(m.region, topology::free_components(binarize(gt)), min_cells);
-    j["segmentation"] = {{"recall", s.recall},
+    BinaryGrid gt = binarize(io::load_map(a.ground_truth, fo).grid);
+    if (gt.width() != geo.width || gt.height() != geo.height) {
+      std::cerr << "notice: " << a.ground_truth.string() << " is " << gt.width() << "x"
+                << gt.height() << ", the map " << geo.width << "x" << geo.height
+                << ": the ground truth is scaled to the map (nearest neighbour)\n";
+      j["ground_truth_scaled_from"] = {gt.width(), gt.height()};
+      gt = topology::resample_nearest(gt, geo.width, geo.height);
+    }
+    topology::SegmentationScores s;
+    if (a.metric == "ipa") {
+      s = topology::segmentation_scores_ipa(m.region, gt);
+    } else {
+      // Ground-truth rooms smaller than the region merge area are specks, not rooms.
+      const auto min_cells =
+          static_cast<std::size_t>(a.min_region_area / (geo.resolution * geo.resolution));
+      s = topology::segmentation_scores(m.region, topology::free_components(gt), min_cells);
+    }
+    j["segmentation"] = {{"metric", a.metric},
+                         {"recall", s.recall},
                          {"precision", s.precision},
                          {"rooms", s.rooms},
                          {"regions", s.regions}};
+  }
+  if (!a.labels.empty()) {
+    topology::write_label_image(a.labels, m.region);
+    j["labels"] = a.labels.string();
   }
   if (!a.out.empty()) {
     save_stages(loaded.grid, blocked, m, opt.gvd.border_is_blocked, a.out);
@@ -135,7 +166,17 @@ void setup(CLI::App& app) {
                   "Folder for the stage pictures a_binary .. f_graph.png and topology.json")
       ->check(output_dir());
   cmd->add_option("--ground-truth", args->ground_truth,
-                  "Ground-truth room image (white rooms): adds segmentation recall/precision");
+                  "Ground-truth room image (white rooms): adds segmentation recall/precision "
+                  "(an image of another size is scaled to the map, nearest neighbour, with a "
+                  "notice)");
+  cmd->add_option("--labels", args->labels,
+                  "Write the regions as a 16-bit label image (.png or .pgm): 0 = no region, "
+                  "region id + 1 otherwise, same size and orientation as the map image");
+  cmd->add_option("--metric", args->metric,
+                  "Segmentation score: ipa (ipa_room_segmentation: 8-connected rooms and regions "
+                  "over 100 px, full areas) | intersection (4-connected rooms >= "
+                  "--min-region-area, areas cut to room and region cells)")
+      ->capture_default_str();
   cmd->add_option("--free-from", args->free_from,
                   "Image maps: a pixel is free when its grey is >= this (0..255)")
       ->check(CLI::Range(1, 255))

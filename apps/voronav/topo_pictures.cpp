@@ -89,8 +89,7 @@ void save_stages(const OccupancyGrid& grid, const BinaryGrid& blocked,
     f.binary(blocked, wall, render::colors::kWhite);
     f.labels(m.region, 0.25);
     for (const auto& e : m.edges) {
-      const Vec2 mid = grid.geometry().cell_center(
-          m.critical_points[static_cast<std::size_t>(e.critical_point)].midpoint);
+      const Vec2 mid = grid.geometry().cell_center(e.midpoint);
       f.segment(m.regions[static_cast<std::size_t>(e.a)].centre_world, mid, render::colors::kBlue,
                 2.0);
       f.segment(mid, m.regions[static_cast<std::size_t>(e.b)].centre_world, render::colors::kBlue,

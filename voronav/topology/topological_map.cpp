@@ -6,6 +6,7 @@
 #include <map>
 #include <numeric>
 #include <queue>
+#include <set>
 #include <string>
 
 #include "voronav/core/cell_iterators.hpp"
@@ -246,6 +247,67 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     }
     if (!progress) break;  // line cells enclosed by other line cells only: left out
   }
+  // 4b. Regions still under min_region_area (specks between crossing lines, pockets cut off by
+  // line cells) merge into the neighbour sharing the longest border (4-neighbour cell pairs),
+  // smallest first; a region with no neighbour under the area is dropped (its cells get no
+  // region: an isolated free speck is not a room).
+  {
+    std::vector<double> rarea(static_cast<std::size_t>(nregions), 0.0);
+    std::map<std::pair<int, int>, double> border;
+    for (int y = 0; y < geo.height; ++y)
+      for (int x = 0; x < geo.width; ++x) {
+        const int r = out.region[Cell{x, y}];
+        if (r < 0) continue;
+        rarea[static_cast<std::size_t>(r)] += res * res;
+        for (const Cell q : {Cell{x + 1, y}, Cell{x, y + 1}}) {
+          if (!geo.contains(q)) continue;
+          const int t = out.region[q];
+          if (t >= 0 && t != r) border[{std::min(r, t), std::max(r, t)}] += 1.0;
+        }
+      }
+    UnionFind ufr(nregions);
+    std::vector<char> dropped(static_cast<std::size_t>(nregions), 0);
+    while (true) {
+      int smallest = -1;
+      for (int r = 0; r < nregions; ++r) {
+        const auto ru = static_cast<std::size_t>(r);
+        if (ufr.find(r) != r || dropped[ru] || rarea[ru] >= min_area) continue;
+        if (smallest < 0 || rarea[ru] < rarea[static_cast<std::size_t>(smallest)]) smallest = r;
+      }
+      if (smallest < 0) break;
+      std::map<int, double> weight;
+      for (const auto& [pair, w] : border) {
+        const int a = ufr.find(pair.first), b = ufr.find(pair.second);
+        if (a == b) continue;
+        if (a == smallest) weight[b] += w;
+        if (b == smallest) weight[a] += w;
+      }
+      int target = -1;
+      double best_w = -1.0;
+      for (const auto& [t, w] : weight)
+        if (w > best_w) best_w = w, target = t;
+      if (target < 0) {
+        dropped[static_cast<std::size_t>(smallest)] = 1;
+        continue;
+      }
+      ufr.parent[static_cast<std::size_t>(smallest)] = target;
+      rarea[static_cast<std::size_t>(target)] += rarea[static_cast<std::size_t>(smallest)];
+    }
+    std::vector<int> rid(static_cast<std::size_t>(nregions), -1);
+    int n2 = 0;
+    for (std::size_t i = 0; i < comp.size(); ++i) {
+      const int r = out.region[i];
+      if (r < 0) continue;
+      const int root = ufr.find(r);
+      if (dropped[static_cast<std::size_t>(root)]) {
+        out.region[i] = -1;
+        continue;
+      }
+      if (rid[static_cast<std::size_t>(root)] < 0) rid[static_cast<std::size_t>(root)] = n2++;
+      out.region[i] = rid[static_cast<std::size_t>(root)];
+    }
+    nregions = n2;
+  }
   // 5. Region statistics and centres.
   out.regions.resize(static_cast<std::size_t>(nregions));
   std::vector<double> sx(static_cast<std::size_t>(nregions), 0.0), sy(sx);
@@ -277,25 +339,65 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     reg.area_m2 = static_cast<double>(reg.cells) * res * res;
     reg.centre_world = geo.cell_center(reg.centre);
   }
-  // 6. Graph edges: one per separating critical line.
-  for (std::size_t k = 0; k < out.critical_points.size(); ++k) {
-    CriticalPoint& cp = out.critical_points[k];
-    if (sides[k].first < 0) {
-      cp.separates = false;
-      continue;
-    }
-    const int a = id_of[static_cast<std::size_t>(uf.find(sides[k].first))];
-    const int b = id_of[static_cast<std::size_t>(uf.find(sides[k].second))];
-    cp.separates = a != b;
-    if (!cp.separates) continue;
-    const Vec2 m = geo.cell_center(cp.midpoint);
+  // 6. Graph edges: one per separating critical line (its two sides: the two most frequent final
+  // regions next to its cells), then one per pair of regions that touch without a separating
+  // line (so that every region is connected where its free space is), crossing at the border
+  // cell nearest the middle of their common border.
+  std::set<std::pair<int, int>> linked;
+  auto add_edge = [&](int a, int b, int cp, Cell mid) {
+    const Vec2 m = geo.cell_center(mid);
     TopoEdge e;
     e.a = std::min(a, b);
     e.b = std::max(a, b);
-    e.critical_point = static_cast<int>(k);
+    e.critical_point = cp;
+    e.midpoint = mid;
     e.length_m = distance(out.regions[static_cast<std::size_t>(e.a)].centre_world, m) +
                  distance(m, out.regions[static_cast<std::size_t>(e.b)].centre_world);
     out.edges.push_back(e);
+    linked.insert({e.a, e.b});
+  };
+  for (std::size_t k = 0; k < out.critical_points.size(); ++k) {
+    CriticalPoint& cp = out.critical_points[k];
+    std::map<int, int> count;
+    for (const Cell c : cp.line)
+      for (int d = 0; d < 4; ++d) {
+        const Cell q = c + kNeighbours8[d];
+        if (geo.contains(q) && out.region[q] >= 0 && !cut[q]) count[out.region[q]]++;
+      }
+    std::vector<std::pair<int, int>> byc(count.begin(), count.end());
+    std::sort(byc.begin(), byc.end(), [](auto a, auto b) {
+      return a.second != b.second ? a.second > b.second : a.first < b.first;
+    });
+    cp.separates = byc.size() >= 2;
+    if (!cp.separates) continue;
+    add_edge(byc[0].first, byc[1].first, static_cast<int>(k), cp.midpoint);
+  }
+  std::map<std::pair<int, int>, std::vector<Cell>> touching;
+  for (int y = 0; y < geo.height; ++y)
+    for (int x = 0; x < geo.width; ++x) {
+      const int r = out.region[Cell{x, y}];
+      if (r < 0) continue;
+      for (const Cell q : {Cell{x + 1, y}, Cell{x, y + 1}}) {
+        if (!geo.contains(q)) continue;
+        const int t = out.region[q];
+        if (t < 0 || t == r) continue;
+        const std::pair<int, int> key{std::min(r, t), std::max(r, t)};
+        if (!linked.contains(key)) touching[key].push_back(Cell{x, y});
+      }
+    }
+  for (const auto& [key, cells] : touching) {
+    double mx = 0.0, my = 0.0;
+    for (const Cell c : cells)
+      mx += c.x, my += c.y;
+    mx /= static_cast<double>(cells.size());
+    my /= static_cast<double>(cells.size());
+    Cell mid = cells[0];
+    double best_d = HUGE_VAL;
+    for (const Cell c : cells) {
+      const double d = (c.x - mx) * (c.x - mx) + (c.y - my) * (c.y - my);
+      if (d < best_d) best_d = d, mid = c;
+    }
+    add_edge(key.first, key.second, -1, mid);
   }
   return out;
 }
@@ -351,8 +453,7 @@ TopoPlan plan_on_graph(const TopologicalMap& map, Cell start, Cell goal) {
   };
   auto point_of_state = [&](std::size_t s) {
     if (s == 0) return pos(start);
-    return pos(map.critical_points[static_cast<std::size_t>(map.edges[(s - 1) / 2].critical_point)]
-                   .midpoint);
+    return pos(map.edges[(s - 1) / 2].midpoint);
   };
   // Incident edges per region.
   std::vector<std::vector<std::size_t>> incident(map.regions.size());
@@ -414,10 +515,7 @@ TopoPlan plan_on_graph(const TopologicalMap& map, Cell start, Cell goal) {
     const int e = static_cast<int>((s - 1) / 2);
     plan.edges.push_back(e);
     plan.regions.push_back(region_of_state(s));
-    plan.waypoints.push_back(
-        map.critical_points[static_cast<std::size_t>(
-                                map.edges[static_cast<std::size_t>(e)].critical_point)]
-            .midpoint);
+    plan.waypoints.push_back(map.edges[static_cast<std::size_t>(e)].midpoint);
     plan.graph_cost_m += map.edges[static_cast<std::size_t>(e)].length_m;
   }
   plan.waypoints.push_back(goal);

@@ -14,8 +14,11 @@
 //    [m^2] is merged into the neighbour it shares the most critical-line cells with (the smallest
 //    region first, repeated until none is left); a critical line whose two sides end up in the
 //    same region does not separate anything and is marked so.
+//    Regions still under min_region_area then merge into the neighbour sharing the longest
+//    border (4-neighbour cell pairs); one without any neighbour is dropped (no region).
 //  - graph: node = region centre (the region cell nearest its centroid), edge = a separating
-//    critical line between two regions, cost = centre -> line midpoint -> centre [m].
+//    critical line between two regions, or the common border of two regions that touch without
+//    one (crossing at the border cell nearest its middle), cost = centre -> crossing -> centre [m].
 //  - planning: A* on the graph (heuristic: straight distance between centres), expanded back to
 //    a metric path start -> midpoints of the crossed critical lines -> goal.
 #pragma once
@@ -69,7 +72,8 @@ struct Region {
 
 struct TopoEdge {
   int a = 0, b = 0;        ///< region ids
-  int critical_point = 0;  ///< index into critical_points
+  int critical_point = 0;  ///< index into critical_points; -1: the regions touch without a line
+  Cell midpoint;           ///< where the edge crosses: the line's midpoint or a border cell
   double length_m = 0.0;   ///< centre(a) -> midpoint -> centre(b) [m]
 };
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
+#include <unordered_map>
 
 #include "voronav/core/error.hpp"
 #include "voronav/voronoi/internal/skeleton.hpp"
@@ -120,27 +122,58 @@ DynamicGvd::DynamicGvd(const BinaryGrid& blocked, const GvdOptions& options)
   site_.assign(n, -1);
   label_.assign(n, -1);
   raw_.assign(n, 0);
-  skel_.assign(n, 0);
+  visit_.assign(n, -1);
+  mark_.assign(n, 0);
+  d2_changed_.assign(n, 0);
   for (int x = 0; x < pw_; ++x)
-    column_pass(x, nullptr);
+    column_pass(x, nullptr, {-1, -1});
   for (int y = 0; y < ph_; ++y)
-    row_pass(y, nullptr);
+    row_pass(y);
+  max_d2_ = 0;
+  for (const std::int64_t d : d2_)
+    max_d2_ = std::max(max_d2_, d);
   full_labels();
   for (std::size_t i = 0; i < n; ++i)
     raw_[i] = raw_mark(i) ? 1 : 0;
-  thin_and_prune();
+  build_skeleton();
 }
 
-void DynamicGvd::column_pass(int x, std::vector<int>* changed_rows) {
-  // 1-D nearest site along the column: forward then backward scan (ties: the lower row).
+void DynamicGvd::grow_span(std::unordered_map<int, std::pair<int, int>>& spans,
+                           std::size_t i) const {
+  const int x = static_cast<int>(i % static_cast<std::size_t>(pw_));
+  const int y = static_cast<int>(i / static_cast<std::size_t>(pw_));
+  auto [it, fresh] = spans.try_emplace(x, y, y);
+  if (!fresh) {
+    it->second.first = std::min(it->second.first, y);
+    it->second.second = std::max(it->second.second, y);
+  }
+}
+
+void DynamicGvd::column_pass(int x, std::vector<std::pair<int, bool>>* changed_rows,
+                             std::pair<int, int> span) {
+  // 1-D nearest site along the column: forward then backward scan (ties: the lower row). Only
+  // the rows between the nearest obstacles outside the changed span can change: those obstacles
+  // shield the rest of the column.
+  int y0 = 0, y1 = ph_ - 1;
+  if (span.first >= 0) {
+    y0 = span.first;
+    while (y0 > 0 && state_[pidx(x, y0 - 1)] != kBlockedCell)
+      --y0;
+    y0 = std::max(0, y0 - 1);
+    y1 = span.second;
+    while (y1 < ph_ - 1 && state_[pidx(x, y1 + 1)] != kBlockedCell)
+      ++y1;
+    y1 = std::min(ph_ - 1, y1 + 1);
+  }
   std::int32_t last = -1;
-  std::vector<std::int32_t> below(static_cast<std::size_t>(ph_));
-  for (int y = 0; y < ph_; ++y) {
+  static thread_local std::vector<std::int32_t> below;
+  below.resize(static_cast<std::size_t>(ph_));
+  for (int y = y0; y <= y1; ++y) {
     if (state_[pidx(x, y)] == kBlockedCell) last = y;
     below[static_cast<std::size_t>(y)] = last;
   }
   std::int32_t above = -1;
-  for (int y = ph_ - 1; y >= 0; --y) {
+  for (int y = y1; y >= y0; --y) {
     if (state_[pidx(x, y)] == kBlockedCell) above = y;
     const std::int32_t b = below[static_cast<std::size_t>(y)];
     std::int32_t best = -1;
@@ -150,13 +183,18 @@ void DynamicGvd::column_pass(int x, std::vector<int>* changed_rows) {
       best = above;
     const std::int64_t d = best < 0 ? kNone : std::int64_t{y - best} * (y - best);
     const std::size_t i = pidx(x, y);
-    if (changed_rows && (col_d_[i] != d || col_arg_[i] != best)) changed_rows->push_back(y);
+    if (changed_rows && (col_d_[i] != d || col_arg_[i] != best)) {
+      // Lowered: the new (distance, row) is lexicographically smaller and exists.
+      const bool lowered =
+          d >= 0 && (col_d_[i] < 0 || d < col_d_[i] || (d == col_d_[i] && best < col_arg_[i]));
+      changed_rows->emplace_back(y, !lowered);
+    }
     col_d_[i] = d;
     col_arg_[i] = best;
   }
 }
 
-void DynamicGvd::row_pass(int y, std::vector<std::size_t>* changed) {
+void DynamicGvd::row_pass(int y) {
   static thread_local Envelope env;
   static thread_local std::vector<std::int64_t> d;
   static thread_local std::vector<std::int32_t> arg;
@@ -166,15 +204,78 @@ void DynamicGvd::row_pass(int y, std::vector<std::size_t>* changed) {
   for (int x = 0; x < pw_; ++x) {
     const std::size_t i = pidx(x, y);
     const std::int32_t ax = arg[static_cast<std::size_t>(x)];
+    d2_[i] = d[static_cast<std::size_t>(x)];
+    site_[i] = ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_[pidx(ax, y)]));
+  }
+}
+
+void DynamicGvd::row_segment(int y, int xa, int xb, std::vector<std::size_t>* changed) {
+  static thread_local Envelope env;
+  static thread_local std::vector<std::int64_t> d;
+  static thread_local std::vector<std::int32_t> arg;
+  // The new distance of a cell of [xa, xb] is at most the distance of an unchanged neighbour
+  // outside the segment plus the way to it (1-Lipschitz), so its nearest column is within W.
+  auto dist = [&](int u) {
+    if (u < 0 || u >= pw_) return HUGE_VAL;
+    const std::int64_t v = d2_[pidx(u, y)];
+    return v < 0 ? HUGE_VAL : std::sqrt(static_cast<double>(v));
+  };
+  const double a = dist(xa - 1), b = dist(xb + 1);
+  const double span = static_cast<double>(xb - xa + 2);
+  int c0 = 0, c1 = pw_ - 1;
+  if (a < HUGE_VAL || b < HUGE_VAL) {
+    const double m = a < HUGE_VAL && b < HUGE_VAL ? 0.5 * (a + b + span) : std::min(a, b) + span;
+    const int w = static_cast<int>(std::ceil(m)) + 1;
+    c0 = std::max(0, xa - w);
+    c1 = std::min(pw_ - 1, xb + w);
+  }
+  const int n = c1 - c0 + 1;
+  d.resize(static_cast<std::size_t>(n));
+  arg.resize(static_cast<std::size_t>(n));
+  env.run(&col_d_[pidx(c0, y)], n, d.data(), arg.data());
+  for (int x = xa; x <= xb; ++x) {
+    const std::size_t i = pidx(x, y);
+    const auto k = static_cast<std::size_t>(x - c0);
+    const std::int32_t ax = arg[k] < 0 ? -1 : arg[k] + c0;
     const std::int32_t s = ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_[pidx(ax, y)]));
-    const std::int64_t dd = d[static_cast<std::size_t>(x)];
-    if (changed && (d2_[i] != dd || site_[i] != s)) changed->push_back(i);
-    d2_[i] = dd;
+    if (d2_[i] == d[k] && site_[i] == s) continue;
+    changed->push_back(i);
+    if (d2_[i] != d[k]) d2_changed_[i] = 1;
+    d2_[i] = d[k];
     site_[i] = s;
   }
 }
 
-int DynamicGvd::relabel_from(std::size_t seed, std::int32_t id) {
+void DynamicGvd::row_lower(int y, int xa, int xb, const std::vector<int>& cols,
+                           std::vector<std::size_t>* changed) {
+  // Only lowered columns changed in this row: their old sites still exist, so the new nearest
+  // site of a cell is the lexicographic minimum of its old one and the changed columns' sites.
+  const auto w = static_cast<std::size_t>(pw_);
+  for (int x = xa; x <= xb; ++x) {
+    const std::size_t i = pidx(x, y);
+    std::int64_t bd = d2_[i];
+    std::int32_t bs = site_[i];
+    for (const int xc : cols) {
+      const std::size_t ci = pidx(xc, y);
+      if (col_d_[ci] < 0) continue;
+      const std::int64_t dd = std::int64_t{x - xc} * (x - xc) + col_d_[ci];
+      const auto s = static_cast<std::int32_t>(pidx(xc, col_arg_[ci]));
+      bool better = bd < 0 || dd < bd;
+      if (!better && dd == bd && s != bs) {
+        const auto su = static_cast<std::size_t>(s), bu = static_cast<std::size_t>(bs);
+        better = su % w != bu % w ? su % w < bu % w : su / w < bu / w;
+      }
+      if (better) bd = dd, bs = s;
+    }
+    if (bd == d2_[i] && bs == site_[i]) continue;
+    changed->push_back(i);
+    if (bd != d2_[i]) d2_changed_[i] = 1;
+    d2_[i] = bd;
+    site_[i] = bs;
+  }
+}
+
+int DynamicGvd::relabel_from(std::size_t seed, std::int32_t id, std::vector<std::size_t>* cells) {
   std::vector<std::int32_t> seen;
   auto note = [&](std::int32_t old) {
     if (old >= 0 && std::find(seen.begin(), seen.end(), old) == seen.end()) seen.push_back(old);
@@ -182,6 +283,7 @@ int DynamicGvd::relabel_from(std::size_t seed, std::int32_t id) {
   std::vector<std::size_t> stack{seed};
   note(label_[seed]);
   label_[seed] = id;
+  if (cells) cells->push_back(seed);
   const internal::PaddedRaster r{pw_, ph_};
   while (!stack.empty()) {
     const std::size_t c = stack.back();
@@ -197,6 +299,7 @@ int DynamicGvd::relabel_from(std::size_t seed, std::int32_t id) {
       if (state_[j] != kBlockedCell || label_[j] == id) continue;
       note(label_[j]);
       label_[j] = id;
+      if (cells) cells->push_back(j);
       stack.push_back(j);
     }
   }
@@ -205,8 +308,215 @@ int DynamicGvd::relabel_from(std::size_t seed, std::int32_t id) {
 
 void DynamicGvd::full_labels() {
   std::fill(label_.begin(), label_.end(), -1);
+  label_size_.clear();
+  next_label_ = 0;
+  std::vector<std::size_t> cells;
   for (std::size_t i = 0; i < state_.size(); ++i)
-    if (state_[i] == kBlockedCell && label_[i] < 0) relabel_from(i, next_label_++);
+    if (state_[i] == kBlockedCell && label_[i] < 0) {
+      cells.clear();
+      relabel_from(i, next_label_++, &cells);
+      label_size_.push_back(static_cast<std::int64_t>(cells.size()));
+    }
+}
+
+namespace {
+
+// The 8 neighbours of padded cell c that lie inside the padded raster.
+template <class F>
+void for_neighbours8(std::size_t c, int pw, int ph, F&& f) {
+  const int cx = static_cast<int>(c % static_cast<std::size_t>(pw));
+  const int cy = static_cast<int>(c / static_cast<std::size_t>(pw));
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      if ((dx == 0 && dy == 0) || cx + dx < 0 || cy + dy < 0 || cx + dx >= pw || cy + dy >= ph)
+        continue;
+      f(static_cast<std::size_t>(cy + dy) * static_cast<std::size_t>(pw) +
+        static_cast<std::size_t>(cx + dx));
+    }
+}
+
+}  // namespace
+
+bool DynamicGvd::update_labels(const std::vector<std::size_t>& added,
+                               const std::vector<std::size_t>& removed,
+                               std::vector<std::size_t>* relabeled) {
+  bool repartitioned = false;
+  // Removals: a component that lost cells may have split. Its remaining cells next to the
+  // removed ones ("seeds") are flooded in turn; floods that meet are joined, and the search stops
+  // when at most one flood is unfinished: every finished flood is then a whole component.
+  std::vector<std::pair<std::int32_t, std::size_t>> lost;  // (old label, removed cell)
+  for (const std::size_t i : removed) {
+    const std::int32_t l = label_[i];
+    label_[i] = -1;
+    if (l < 0) continue;
+    --label_size_[static_cast<std::size_t>(l)];
+    lost.emplace_back(l, i);
+  }
+  std::sort(lost.begin(), lost.end());
+  for (std::size_t a = 0; a < lost.size();) {
+    const std::int32_t l = lost[a].first;
+    std::size_t b = a;
+    std::vector<std::size_t> seeds;
+    int x0 = pw_, y0 = ph_, x1 = -1, y1 = -1;
+    for (; b < lost.size() && lost[b].first == l; ++b) {
+      const std::size_t i = lost[b].second;
+      const int x = static_cast<int>(i % static_cast<std::size_t>(pw_));
+      const int y = static_cast<int>(i / static_cast<std::size_t>(pw_));
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      for_neighbours8(i, pw_, ph_, [&](std::size_t j) {
+        if (state_[j] == kBlockedCell && label_[j] == l) seeds.push_back(j);
+      });
+    }
+    a = b;
+    std::sort(seeds.begin(), seeds.end());
+    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+    if (seeds.size() <= 1) continue;
+    std::vector<std::size_t> visited;
+    // Fast path: the seeds are connected near the removed cells.
+    {
+      const int m = 3;
+      std::vector<std::size_t> stack{seeds[0]};
+      visit_[seeds[0]] = 0;
+      visited.push_back(seeds[0]);
+      while (!stack.empty()) {
+        const std::size_t c = stack.back();
+        stack.pop_back();
+        for_neighbours8(c, pw_, ph_, [&](std::size_t j) {
+          if (state_[j] != kBlockedCell || label_[j] != l || visit_[j] >= 0) return;
+          const int x = static_cast<int>(j % static_cast<std::size_t>(pw_));
+          const int y = static_cast<int>(j / static_cast<std::size_t>(pw_));
+          if (x < x0 - m || x > x1 + m || y < y0 - m || y > y1 + m) return;
+          visit_[j] = 0;
+          visited.push_back(j);
+          stack.push_back(j);
+        });
+      }
+      const bool local =
+          std::all_of(seeds.begin(), seeds.end(), [&](std::size_t s) { return visit_[s] >= 0; });
+      for (const std::size_t c : visited)
+        visit_[c] = -1;
+      visited.clear();
+      if (local) continue;
+    }
+    const std::size_t k = seeds.size();
+    std::vector<std::size_t> parent(k);
+    for (std::size_t s = 0; s < k; ++s)
+      parent[s] = s;
+    auto find = [&](std::size_t s) {
+      while (parent[s] != s)
+        s = parent[s] = parent[parent[s]];
+      return s;
+    };
+    std::vector<std::vector<std::size_t>> queue(k), cells(k);
+    std::vector<std::size_t> head(k, 0);
+    for (std::size_t s = 0; s < k; ++s) {
+      visit_[seeds[s]] = static_cast<std::int32_t>(s);
+      queue[s].push_back(seeds[s]);
+      cells[s].push_back(seeds[s]);
+      visited.push_back(seeds[s]);
+    }
+    while (true) {
+      std::size_t roots = 0, open_roots = 0;
+      std::vector<std::uint8_t> open(k, 0), is_root(k, 0);
+      for (std::size_t s = 0; s < k; ++s) {
+        const std::size_t rt = find(s);
+        if (!is_root[rt]) is_root[rt] = 1, ++roots;
+        if (head[s] < queue[s].size() && !open[rt]) open[rt] = 1, ++open_roots;
+      }
+      if (roots <= 1 || open_roots <= 1) break;
+      for (std::size_t s = 0; s < k; ++s) {
+        if (head[s] >= queue[s].size()) continue;
+        const std::size_t c = queue[s][head[s]++];
+        for_neighbours8(c, pw_, ph_, [&](std::size_t j) {
+          if (state_[j] != kBlockedCell || label_[j] != l) return;
+          if (visit_[j] < 0) {
+            visit_[j] = static_cast<std::int32_t>(s);
+            queue[s].push_back(j);
+            cells[s].push_back(j);
+            visited.push_back(j);
+          } else {
+            const std::size_t ra = find(static_cast<std::size_t>(visit_[j])), rb = find(s);
+            if (ra != rb) parent[ra] = rb;
+          }
+        });
+      }
+    }
+    for (const std::size_t c : visited)
+      visit_[c] = -1;
+    // Group the floods by root; the unfinished one (or the largest) keeps label l.
+    std::vector<std::size_t> roots;
+    std::vector<std::int64_t> size(k, 0);
+    std::vector<std::uint8_t> open(k, 0);
+    for (std::size_t s = 0; s < k; ++s) {
+      const std::size_t rt = find(s);
+      size[rt] += static_cast<std::int64_t>(cells[s].size());
+      if (head[s] < queue[s].size()) open[rt] = 1;
+      if (std::find(roots.begin(), roots.end(), rt) == roots.end()) roots.push_back(rt);
+    }
+    if (roots.size() <= 1) continue;
+    repartitioned = true;
+    std::size_t keep = roots[0];
+    for (const std::size_t rt : roots)
+      if (open[rt] || (!open[keep] && size[rt] > size[keep])) keep = rt;
+    for (const std::size_t rt : roots) {
+      if (rt == keep) continue;
+      const std::int32_t id = next_label_++;
+      label_size_.push_back(size[rt]);
+      label_size_[static_cast<std::size_t>(l)] -= size[rt];
+      for (std::size_t s = 0; s < k; ++s) {
+        if (find(s) != rt) continue;
+        for (const std::size_t c : cells[s]) {
+          label_[c] = id;
+          relabeled->push_back(c);
+        }
+      }
+    }
+  }
+  // Additions: a group of added cells takes the label it touches; when it touches several, the
+  // smaller components take the label of the largest.
+  for (const std::size_t i : added) {
+    if (label_[i] >= 0) continue;
+    std::vector<std::size_t> group{i};
+    label_[i] = -2;                                              // in the group
+    std::vector<std::pair<std::int32_t, std::size_t>> touching;  // (label, a cell of it)
+    for (std::size_t g = 0; g < group.size(); ++g)
+      for_neighbours8(group[g], pw_, ph_, [&](std::size_t j) {
+        if (state_[j] != kBlockedCell) return;
+        if (label_[j] == -1) {
+          label_[j] = -2;
+          group.push_back(j);
+        } else if (label_[j] >= 0 &&
+                   std::none_of(touching.begin(), touching.end(),
+                                [&](const auto& t) { return t.first == label_[j]; })) {
+          touching.emplace_back(label_[j], j);
+        }
+      });
+    std::int32_t id = -1;
+    if (touching.empty()) {
+      id = next_label_++;
+      label_size_.push_back(0);
+    } else {
+      id = touching[0].first;
+      for (const auto& t : touching)
+        if (label_size_[static_cast<std::size_t>(t.first)] >
+            label_size_[static_cast<std::size_t>(id)])
+          id = t.first;
+    }
+    for (const std::size_t c : group)
+      label_[c] = id;
+    label_size_[static_cast<std::size_t>(id)] += static_cast<std::int64_t>(group.size());
+    for (const auto& t : touching) {
+      if (t.first == id || label_[t.second] == id) continue;
+      repartitioned = true;
+      const std::size_t before = relabeled->size();
+      relabel_from(t.second, id, relabeled);
+      const auto moved = static_cast<std::int64_t>(relabeled->size() - before);
+      label_size_[static_cast<std::size_t>(t.first)] = 0;
+      label_size_[static_cast<std::size_t>(id)] += moved;
+    }
+    if (touching.size() > 1) repartitioned = true;
+  }
+  return repartitioned;
 }
 
 bool DynamicGvd::raw_mark(std::size_t i) const {
@@ -241,26 +551,31 @@ bool DynamicGvd::raw_mark(std::size_t i) const {
   return false;
 }
 
-void DynamicGvd::thin_and_prune() {
-  skel_ = raw_;
+double DynamicGvd::max_spur() const {
+  const double min_cells = options_.spur_min_length / geometry_.resolution;
+  return std::max(min_cells,
+                  options_.spur_clearance_ratio * std::sqrt(static_cast<double>(max_d2_))) +
+         1.0;
+}
+
+const std::vector<std::uint8_t>& DynamicGvd::skel() const {
+  return thins_.empty() ? raw_ : thins_.back().out();
+}
+
+void DynamicGvd::build_skeleton() {
+  thins_.clear();
+  prunes_.clear();
   if (!options_.thin) return;
-  std::vector<std::size_t> order;
-  for (std::size_t i = 0; i < raw_.size(); ++i)
-    if (raw_[i]) order.push_back(i);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return d2_[a] != d2_[b] ? d2_[a] < d2_[b] : a < b;
-  });
   const internal::PaddedRaster r{pw_, ph_};
-  internal::thin(skel_, r, order);
+  thins_.emplace_back(r);
+  thins_.back().build(raw_, d2_);
   if (options_.spur_min_length <= 0.0 && options_.spur_clearance_ratio <= 0.0) return;
   const double min_cells = options_.spur_min_length / geometry_.resolution;
   for (int round = 0; round < options_.prune_rounds; ++round) {
-    const std::size_t removed = internal::prune_spurs(skel_, r, [&](std::size_t j) {
-      return std::max(min_cells,
-                      options_.spur_clearance_ratio * std::sqrt(static_cast<double>(d2_[j])));
-    });
-    if (removed == 0) break;
-    internal::thin(skel_, r, order);
+    prunes_.emplace_back(r, min_cells, options_.spur_clearance_ratio);
+    prunes_.back().build(thins_.back().out(), d2_, max_spur());
+    thins_.emplace_back(r);
+    thins_.back().build(prunes_.back().out(), d2_);
   }
 }
 
@@ -290,64 +605,141 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
   };
   net(added, kBlockedCell);
   net(removed, kFreeCell);
+  // A cell that was both added and removed but ended as it began is in neither list; its label
+  // must stay as it was (a removed-then-added cell keeps a valid label below).
   stats.changed_cells = added.size() + removed.size();
   if (stats.changed_cells == 0) return stats;
 
-  // Distance field: recompute the touched columns, then the rows whose column data changed.
+  // Distance field: recompute the touched columns between the nearest obstacles above and below
+  // the changed cells, then in each row whose column data changed the segments that can see a
+  // changed column.
   std::sort(columns.begin(), columns.end());
   columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
-  std::vector<int> rows;
-  for (const int x : columns)
-    column_pass(x, &rows);
-  std::sort(rows.begin(), rows.end());
-  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  std::unordered_map<int, std::pair<int, int>> column_rows;  // column -> changed row span
+  for (const std::size_t i : added)
+    grow_span(column_rows, i);
+  for (const std::size_t i : removed)
+    grow_span(column_rows, i);
+  std::vector<std::tuple<int, int, bool>> row_cols;  // (row, column, raised) that changed
+  std::vector<std::pair<int, bool>> rows;
+  for (const int x : columns) {
+    rows.clear();
+    column_pass(x, &rows, column_rows[x]);
+    for (const auto& [y, raised] : rows)
+      row_cols.emplace_back(y, x, raised);
+  }
+  std::sort(row_cols.begin(), row_cols.end());
   std::vector<std::size_t> changed;
-  for (const int y : rows)
-    row_pass(y, &changed);
-  stats.recomputed_rows = rows.size();
+  std::vector<std::pair<int, int>> ranges;
+  std::vector<int> lowered_cols;
+  for (std::size_t a = 0; a < row_cols.size();) {
+    const int y = std::get<0>(row_cols[a]);
+    ranges.clear();
+    lowered_cols.clear();
+    bool raised = false;
+    for (; a < row_cols.size() && std::get<0>(row_cols[a]) == y; ++a) {
+      const int xc = std::get<1>(row_cols[a]);
+      raised |= std::get<2>(row_cols[a]);
+      lowered_cols.push_back(xc);
+      auto sees = [&](int x) {
+        const std::int64_t v = d2_[pidx(x, y)];
+        return v < 0 || std::int64_t{x - xc} * (x - xc) <= v;
+      };
+      int l = xc, r = xc;
+      while (l > 0 && sees(l - 1))
+        --l;
+      while (r + 1 < pw_ && sees(r + 1))
+        ++r;
+      ranges.emplace_back(l, r);
+    }
+    std::sort(ranges.begin(), ranges.end());
+    std::size_t m = 0;
+    for (std::size_t k = 1; k < ranges.size(); ++k) {
+      if (ranges[k].first <= ranges[m].second + 1)
+        ranges[m].second = std::max(ranges[m].second, ranges[k].second);
+      else
+        ranges[++m] = ranges[k];
+    }
+    ranges.resize(m + 1);
+    for (const auto& [l, r] : ranges) {
+      if (raised)
+        row_segment(y, l, r, &changed);
+      else
+        row_lower(y, l, r, lowered_cols, &changed);
+      stats.row_cells += static_cast<std::size_t>(r - l + 1);
+    }
+    ++stats.recomputed_rows;
+  }
   stats.changed_distances = changed.size();
+  for (const std::size_t c : changed)
+    max_d2_ = std::max(max_d2_, d2_[c]);
 
-  // Obstacle labels: re-flood the components that lost or gained cells.
-  bool repartitioned = false;
-  const internal::PaddedRaster r{pw_, ph_};
-  const std::int32_t batch_start = next_label_;
-  std::vector<std::pair<std::int32_t, int>> floods;  // old label -> pieces found
-  for (const std::size_t i : removed) {
-    const std::int32_t old = label_[i];
-    label_[i] = -1;
-    if (old < 0 || old >= batch_start) continue;
-    for (int k = 0; k < 8; ++k) {
-      const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) + r.offset(k));
-      if (state_[j] != kBlockedCell || label_[j] != old) continue;
-      relabel_from(j, next_label_++);
-      auto it = std::find_if(floods.begin(), floods.end(), [&](auto& f) { return f.first == old; });
-      if (it == floods.end())
-        floods.emplace_back(old, 1);
-      else if (++it->second > 1)
-        repartitioned = true;  // the component split
+  // Obstacle labels.
+  std::vector<std::size_t> relabeled;
+  stats.labels_repartitioned = update_labels(added, removed, &relabeled);
+
+  // Raw diagram: a mark depends on the cell, its 4 neighbours, their sites and site labels.
+  std::vector<std::size_t> redo;
+  const std::ptrdiff_t offs[5] = {0, 1, -1, pw_, -pw_};
+  auto redo_around = [&](std::size_t c) {  // deduplicated with the mark bit 2
+    for (const std::ptrdiff_t off : offs) {
+      const std::ptrdiff_t j = static_cast<std::ptrdiff_t>(c) + off;
+      if (j < 0 || j >= static_cast<std::ptrdiff_t>(raw_.size())) continue;
+      const auto ju = static_cast<std::size_t>(j);
+      if (mark_[ju] & 2U) continue;
+      mark_[ju] |= 2U;
+      redo.push_back(ju);
+    }
+  };
+  for (const std::size_t c : changed)
+    redo_around(c);
+  if (!relabeled.empty()) {
+    // Cells whose site lies in a relabeled component are within the largest distance of it.
+    int x0 = pw_, y0 = ph_, x1 = -1, y1 = -1;
+    for (const std::size_t c : relabeled) {
+      mark_[c] |= 1U;
+      redo_around(c);
+      const int x = static_cast<int>(c % static_cast<std::size_t>(pw_));
+      const int y = static_cast<int>(c / static_cast<std::size_t>(pw_));
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+    const int m = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(max_d2_)))) + 1;
+    for (int y = std::max(0, y0 - m); y <= std::min(ph_ - 1, y1 + m); ++y)
+      for (int x = std::max(0, x0 - m); x <= std::min(pw_ - 1, x1 + m); ++x) {
+        const std::size_t i = pidx(x, y);
+        if (site_[i] >= 0 && (mark_[static_cast<std::size_t>(site_[i])] & 1U)) redo_around(i);
+      }
+    for (const std::size_t c : relabeled)
+      mark_[c] &= static_cast<std::uint8_t>(~1U);
+  }
+  std::vector<internal::Delta> deltas;
+  for (const std::size_t c : redo) {
+    mark_[c] = 0;
+    const std::uint8_t now = raw_mark(c) ? 1 : 0;
+    if (now == raw_[c]) continue;
+    deltas.push_back({c, raw_[c]});
+    raw_[c] = now;
+  }
+  stats.changed_raw = deltas.size();
+
+  // Thinning and pruning, replayed where their input or the clearance changed.
+  std::vector<std::size_t> keys;
+  for (const std::size_t c : changed)  // every stage's input is a subset of the raw diagram
+    if (d2_changed_[c]) {
+      if (raw_[c]) keys.push_back(c);
+      d2_changed_[c] = 0;
+    }
+  if (!thins_.empty()) {
+    deltas = thins_[0].update(raw_, deltas, d2_, keys, &stats.skeleton_work);
+    for (std::size_t k = 0; k < prunes_.size(); ++k) {
+      deltas =
+          prunes_[k].update(thins_[k].out(), deltas, d2_, keys, max_spur(), &stats.skeleton_work);
+      deltas = thins_[k + 1].update(prunes_[k].out(), deltas, d2_, keys, &stats.skeleton_work);
     }
   }
-  for (const std::size_t i : added) {
-    if (label_[i] >= batch_start) continue;  // already flooded from another added cell
-    // The flood counts the components it joins (a merge when more than one).
-    if (relabel_from(i, next_label_++) > 1) repartitioned = true;
-  }
-  stats.labels_repartitioned = repartitioned;
-
-  // Raw diagram: a mark depends on the cell and its 4 neighbours.
-  if (repartitioned) {
-    for (std::size_t i = 0; i < raw_.size(); ++i)
-      raw_[i] = raw_mark(i) ? 1 : 0;
-  } else {
-    const std::ptrdiff_t offs[5] = {0, 1, -1, pw_, -pw_};
-    for (const std::size_t c : changed)
-      for (const std::ptrdiff_t off : offs) {
-        const std::ptrdiff_t j = static_cast<std::ptrdiff_t>(c) + off;
-        if (j < 0 || j >= static_cast<std::ptrdiff_t>(raw_.size())) continue;
-        raw_[static_cast<std::size_t>(j)] = raw_mark(static_cast<std::size_t>(j)) ? 1 : 0;
-      }
-  }
-  thin_and_prune();
+  stats.changed_diagram = deltas.size();
+  for (const auto& t : thins_)
+    stats.thinning_steps = std::max(stats.thinning_steps, t.steps());
   return stats;
 }
 
@@ -363,7 +755,7 @@ bool DynamicGvd::is_blocked(Cell c) const {
 
 bool DynamicGvd::is_voronoi(Cell c) const {
   if (!geometry_.contains(c)) throw Error("DynamicGvd", 0, "cell outside the grid");
-  return skel_[pidx(c.x + 1, c.y + 1)] != 0;
+  return skel()[pidx(c.x + 1, c.y + 1)] != 0;
 }
 
 GeneralizedVoronoi DynamicGvd::snapshot() const {
@@ -387,7 +779,7 @@ GeneralizedVoronoi DynamicGvd::snapshot() const {
       }
       g.obstacle_label[c] = label_[i];
       g.raw[c] = raw_[i];
-      g.diagram[c] = skel_[i];
+      g.diagram[c] = skel()[i];
     }
   return g;
 }

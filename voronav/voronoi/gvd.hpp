@@ -10,26 +10,43 @@
 //     the one farther from the obstacles is marked (ties: the lower row-major index), which makes
 //     every Voronoi cell equidistant to two different obstacles within one cell;
 //  2. thinning to a one-cell-wide 8-connected skeleton: simple cells (Yokoi 8-connectivity
-//     number 1) that are not end points are removed in order of increasing clearance, so the
-//     skeleton keeps the ridge of the distance field and its topology;
-//  3. pruning of spurs: a branch from an end point to a junction shorter than
-//     max(spur_min_length, spur_clearance_ratio * clearance at the junction) is removed.
+//     number 1) that are not end points are removed by a subfield-parallel automaton that peels
+//     the low-clearance side of every band, so the skeleton keeps the ridge of the distance
+//     field and its topology (internal/local_skeleton.hpp; order-independent, unlike a sequential
+//     removal in clearance order, so that it can be updated locally);
+//  3. pruning of spurs: every branch from an end point to a junction shorter than
+//     max(spur_min_length, spur_clearance_ratio * clearance at the junction) is removed, all ends
+//     of a round at once, then the diagram is thinned again (prune_rounds rounds).
 //
-// DynamicGvd keeps the state so that changed cells (a door closes, an obstacle moves) update the
-// distance field and the raw diagram locally (the dynamic-brushfire idea of Lau, Sprunk and
-// Burgard, IROS 2010): only the columns holding changed cells and the rows whose column distances
-// changed are recomputed, obstacle labels are repaired by flood fill of the touched components,
-// and raw Voronoi marks are recomputed only where a nearest site changed (everywhere when two
-// components merged or one split). Thinning and pruning then run over the diagram cells only.
-// The result is identical to a full rebuild.
+// DynamicGvd keeps the state so that changed cells (a door closes, an obstacle moves) update
+// everything locally, in the spirit of the dynamic brushfire of Lau, Sprunk and Burgard (2013):
+//  - distance: the columns holding changed cells are recomputed, then in every row whose column
+//    data changed only the segment that can see a changed column (|x - x'|^2 <= old d^2, found by
+//    scanning out from the changed columns; the distance is 1-Lipschitz so the scan stops at the
+//    first cell that fails) is recomputed, by the parabola envelope over the columns within the
+//    largest possible new distance (bounded by the unchanged cells just outside the segment). The
+//    nearest site is the lexicographic minimum of (squared distance, column, row) in both builds;
+//  - obstacle labels: added cells take the label they touch; a merge relabels the smaller
+//    components, a split is found by flooding from the remaining neighbours of the removed cells
+//    in turn until at most one flood is unfinished (only the pieces that split off are relabeled);
+//  - raw marks: recomputed on the cells whose distance or site changed, their 4-neighbours, and
+//    the cells whose site lies in a relabeled component;
+//  - thinning and pruning: order-independent versions (internal/local_skeleton.hpp: a
+//    subfield-parallel thinning automaton whose whole run is stored, and spur pruning of all ends
+//    at once), replayed only where their input or the clearance changed.
+// The result is identical to a full rebuild (tested on random change sequences with merges and
+// splits), and the cost follows the size of the change, not of the map.
 #pragma once
 
 #include <cstdint>
 #include <span>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "voronav/core/grid_map.hpp"
 #include "voronav/core/occupancy.hpp"
+#include "voronav/voronoi/internal/local_skeleton.hpp"
 
 namespace voronav::voronoi {
 
@@ -95,6 +112,11 @@ struct GvdUpdateStats {
   std::size_t recomputed_rows = 0;    ///< rows of the second EDT pass that were recomputed
   std::size_t changed_distances = 0;  ///< cells whose distance or nearest site changed
   bool labels_repartitioned = false;  ///< a merge or split of obstacle components happened
+  std::size_t row_cells = 0;          ///< cells of the row segments recomputed by the envelope
+  std::size_t changed_raw = 0;        ///< cells whose raw Voronoi mark changed
+  std::size_t skeleton_work = 0;      ///< cells the local re-thinning and re-pruning examined
+  std::size_t changed_diagram = 0;    ///< cells of the final diagram that changed
+  int thinning_steps = 0;             ///< steps of the longest stored thinning run
 };
 
 class DynamicGvd {
@@ -120,13 +142,31 @@ class DynamicGvd {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(pw_) +
            static_cast<std::size_t>(x);
   }
-  void column_pass(int x, std::vector<int>* changed_rows);
-  void row_pass(int y, std::vector<std::size_t>* changed);
+  // Column x from scratch (span {-1, -1}) or around the changed rows span (the rows between
+  // the nearest obstacles outside it); appends the rows whose column data changed.
+  // (row, raised) pairs: raised when the new column value is not lexicographically smaller.
+  void column_pass(int x, std::vector<std::pair<int, bool>>* changed_rows,
+                   std::pair<int, int> span);
+  // Row y where only the columns `cols` changed and all were lowered: min of the old site and
+  // the changed columns' sites for the cells [xa, xb].
+  void row_lower(int y, int xa, int xb, const std::vector<int>& cols,
+                 std::vector<std::size_t>* changed);
+  void grow_span(std::unordered_map<int, std::pair<int, int>>& spans, std::size_t i) const;
+  void row_pass(int y);
+  // Recomputes the cells [xa, xb] of row y exactly from the column data (window of columns
+  // bounded by the unchanged cells xa-1 and xb+1); appends the cells that changed.
+  void row_segment(int y, int xa, int xb, std::vector<std::size_t>* changed);
   // Floods the blocked component of seed with id; returns how many distinct old labels it met.
-  int relabel_from(std::size_t seed, std::int32_t id);
+  // The flooded cells are appended to `cells` when given.
+  int relabel_from(std::size_t seed, std::int32_t id, std::vector<std::size_t>* cells = nullptr);
   void full_labels();
+  // Labels after a batch; appends the blocked cells whose label changed to `relabeled`.
+  bool update_labels(const std::vector<std::size_t>& added, const std::vector<std::size_t>& removed,
+                     std::vector<std::size_t>* relabeled);
   [[nodiscard]] bool raw_mark(std::size_t i) const;
-  void thin_and_prune();
+  void build_skeleton();
+  [[nodiscard]] double max_spur() const;
+  [[nodiscard]] const std::vector<std::uint8_t>& skel() const;
 
   GvdOptions options_;
   GridGeometry geometry_;
@@ -139,8 +179,14 @@ class DynamicGvd {
   std::vector<std::int32_t> site_;     // padded index of the nearest site (-1 none)
   std::vector<std::int32_t> label_;    // obstacle component id (-1 free)
   std::int32_t next_label_ = 0;
+  std::vector<std::int64_t> label_size_;  // cells per label id
+  std::int64_t max_d2_ = 0;               // >= every finite squared distance
+  std::vector<std::int32_t> visit_;       // scratch of the split search (-1)
+  std::vector<std::uint8_t> mark_;        // scratch marks (0)
+  std::vector<std::uint8_t> d2_changed_;  // scratch of update(): the distance changed (0)
   std::vector<std::uint8_t> raw_;
-  std::vector<std::uint8_t> skel_;
+  std::vector<internal::ParallelThinning> thins_;  // thin, then (prune, thin) per round
+  std::vector<internal::ParallelPruning> prunes_;
 };
 
 /// Full build of the generalized Voronoi diagram (see the file comment).
@@ -148,8 +194,9 @@ class DynamicGvd {
                                            const GvdOptions& options = {});
 
 /// Thins a diagram in place to one cell wide, removing simple non-end cells in order of
-/// increasing `clearance` (any field of the same size; larger = kept longer). Exposed for the
-/// cellular-automaton diagram, which uses the same thinning.
+/// increasing `clearance` (any field of the same size; larger = kept longer), sequentially. Used
+/// by the cellular-automaton diagram; DynamicGvd uses the order-independent thinning of
+/// internal/local_skeleton.hpp instead, which it can update locally.
 void thin_diagram(BinaryGrid& diagram, const GridMap<float>& clearance);
 
 /// Thins (as thin_diagram) and then prunes spurs of a diagram in place with the pruning options

@@ -290,7 +290,7 @@ void expect_equal(const GeneralizedVoronoi& inc, const GeneralizedVoronoi& full,
 
 TEST(DynamicGvd, IncrementalUpdateEqualsFullRebuild) {
   int repartitions = 0;
-  for (std::uint32_t seed = 0; seed < 40; ++seed) {
+  for (std::uint32_t seed = 0; seed < 80; ++seed) {
     std::mt19937 rng(1000 + seed);
     const bool border = seed % 3 != 0;
     GvdOptions o;
@@ -331,6 +331,40 @@ TEST(DynamicGvd, IncrementalUpdateEqualsFullRebuild) {
     }
   }
   EXPECT_GT(repartitions, 0);  // the test exercised merges/splits too
+}
+
+// Bars that are joined and cut again: every step merges or splits obstacle components, on
+// small maps with many seeds (both border modes, pruning on and off).
+TEST(DynamicGvd, MergesAndSplitsEqualFullRebuild) {
+  int merges = 0;
+  for (std::uint32_t seed = 0; seed < 60; ++seed) {
+    std::mt19937 rng(5000 + seed);
+    GvdOptions o;
+    o.border_is_blocked = seed % 2 == 0;
+    if (seed % 3 == 0) o.spur_clearance_ratio = 0.0;
+    BinaryGrid g(30, 22, 0);
+    const int y = 5 + static_cast<int>(rng() % 12);
+    fill_rect(g, 3, y, 12, y);
+    fill_rect(g, 15, y, 26, y);
+    fill_rect(g, 8 + static_cast<int>(rng() % 10), 2, 8 + static_cast<int>(rng() % 10), 4);
+    DynamicGvd dyn(g, o);
+    std::uniform_int_distribution<int> ux(0, g.width() - 1), uy(0, g.height() - 1);
+    for (int step = 0; step < 8; ++step) {
+      std::vector<CellChange> changes;
+      const bool join = step % 2 == 0;
+      for (int x = 13; x <= 14; ++x)
+        changes.push_back({{x, y}, join});  // closes or opens the gap between the bars
+      if (rng() % 2) changes.push_back({{ux(rng), uy(rng)}, rng() % 2 == 0});
+      const GvdUpdateStats st = dyn.update(changes);
+      merges += st.labels_repartitioned;
+      for (const CellChange& ch : changes)
+        g[ch.cell] = ch.blocked ? 1 : 0;
+      expect_equal(dyn.snapshot(), build_gvd(g, o),
+                   "seed " + std::to_string(seed) + " step " + std::to_string(step));
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+  }
+  EXPECT_GT(merges, 200);
 }
 
 TEST(DynamicGvd, SmallChangeRecomputesFewRows) {

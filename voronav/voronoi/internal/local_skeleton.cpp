@@ -1,0 +1,316 @@
+#include "voronav/voronoi/internal/local_skeleton.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace voronav::voronoi::internal {
+
+bool ParallelThinning::removable(const std::vector<std::uint8_t>& in, std::size_t c, int t) const {
+  int nb[8];
+  int deg = 0;
+  for (int k = 0; k < 8; ++k) {
+    const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + r_.offset(k));
+    nb[k] = in[j] && removed_at_[j] >= t ? 1 : 0;
+    deg += nb[k];
+  }
+  if (deg < 2) return false;  // end points and isolated cells stay
+  int n = 0;                  // Yokoi 8-connectivity number
+  for (int k = 0; k < 8; k += 2) {
+    const int a = 1 - nb[k], b = 1 - nb[k + 1], d = 1 - nb[(k + 2) % 8];
+    n += a - a * b * d;
+  }
+  if (n != 1) return false;
+  auto at = [&](int k) {
+    return static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + r_.offset(k));
+  };
+  // The lowest key of a full 2x2 block goes (the result is one cell wide).
+  for (int k = 0; k < 8; k += 2)
+    if (nb[k] && nb[k + 1] && nb[(k + 2) % 8] && key_less(c, at(k)) && key_less(c, at(k + 1)) &&
+        key_less(c, at((k + 2) % 8)))
+      return true;
+  // The corner of an L of three cells goes (its two arms touch diagonally: no 3-cell cycles).
+  for (int k = 0; k < 8; k += 2)
+    if (nb[k] && nb[(k + 2) % 8] && !nb[k + 1]) return true;
+  // A border cell on the low side of the band goes (the ridge of the key field stays).
+  for (int k = 0; k < 8; k += 2)
+    if (nb[k] && !nb[(k + 4) % 8] && key_less(c, at(k))) return true;
+  return false;
+}
+
+void ParallelThinning::build(const std::vector<std::uint8_t>& in,
+                             const std::vector<std::int64_t>& key) {
+  key_ = &key;
+  const std::size_t n = in.size();
+  removed_at_.assign(n, kNever);
+  rec_of_.assign(n, -1);
+  seen_.assign(n, 0);
+  epoch_ = 0;
+  std::vector<std::size_t> lists[4];
+  for (std::size_t c = 0; c < n; ++c)
+    if (in[c]) lists[subfield(c)].push_back(c);
+  int quiet = 0, last = -1;
+  for (int t = 0;; ++t) {
+    bool removed = false;
+    auto& list = lists[t & 3];
+    for (const std::size_t c : list) {
+      if (removed_at_[c] != kNever || !removable(in, c, t)) continue;
+      removed_at_[c] = t;
+      removed = true;
+    }
+    if (removed) {
+      quiet = 0;
+      last = t;
+      std::erase_if(list, [&](std::size_t c) { return removed_at_[c] != kNever; });
+    } else if (++quiet >= 4) {
+      break;
+    }
+  }
+  steps_ = last + 1;
+  out_.assign(n, 0);
+  for (std::size_t c = 0; c < n; ++c)
+    out_[c] = in[c] && removed_at_[c] == kNever ? 1 : 0;
+}
+
+std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
+                                            const std::vector<Delta>& in_changes,
+                                            const std::vector<std::int64_t>& key,
+                                            const std::vector<std::size_t>& key_changes,
+                                            std::size_t* work) {
+  key_ = &key;
+  struct Rec {
+    std::size_t cell;
+    std::uint8_t old_in;
+    std::int32_t old_removed_at;
+  };
+  std::vector<Rec> recs;
+  auto touch = [&](std::size_t c, std::uint8_t old_in) {
+    if (rec_of_[c] >= 0) return;
+    rec_of_[c] = static_cast<std::int32_t>(recs.size());
+    recs.push_back({c, old_in, removed_at_[c]});
+  };
+  for (const Delta& d : in_changes) {
+    touch(d.cell, d.old_value);
+    removed_at_[d.cell] = kNever;  // decided again below
+  }
+  std::vector<std::size_t> perm;  // cells of the set whose key changed: dirty at every step
+  for (const std::size_t k : key_changes)
+    if (in[k]) perm.push_back(k);
+
+  const auto w = static_cast<std::ptrdiff_t>(r_.width);
+  std::vector<std::size_t> cand;
+  const int old_steps = steps_;
+  int quiet = 0, last = -1;
+  for (int t = 0;; ++t) {
+    if (++epoch_ == 0) {
+      std::fill(seen_.begin(), seen_.end(), 0U);
+      epoch_ = 1;
+    }
+    const int sf = t & 3;
+    cand.clear();
+    // The cells of the current subfield in the 3x3 neighbourhood of c.
+    auto add_around = [&](std::size_t c) {
+      const auto cx = static_cast<std::ptrdiff_t>(c) % w, cy = static_cast<std::ptrdiff_t>(c) / w;
+      const std::ptrdiff_t fx = (cx & 1) == (sf & 1) ? 0 : -1;
+      const std::ptrdiff_t fy = (cy & 1) == ((sf >> 1) & 1) ? 0 : -1;
+      for (std::ptrdiff_t dy = fy; dy <= 1; dy += 2)
+        for (std::ptrdiff_t dx = fx; dx <= 1; dx += 2) {
+          const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + dy * w + dx);
+          if (!in[j] || seen_[j] == epoch_) continue;
+          seen_[j] = epoch_;
+          cand.push_back(j);
+        }
+    };
+    bool any_diff = false;
+    const std::size_t nrec = recs.size();
+    for (std::size_t k = 0; k < nrec; ++k) {
+      const Rec& rec = recs[k];
+      const bool old_alive = rec.old_in && rec.old_removed_at >= t;
+      const bool new_alive = in[rec.cell] && removed_at_[rec.cell] >= t;
+      if (old_alive == new_alive) continue;
+      any_diff = true;
+      add_around(rec.cell);
+    }
+    if (!any_diff && perm.empty()) break;  // the same state as the stored run from here on
+    for (const std::size_t k : perm)
+      add_around(k);
+    bool removed = false;
+    for (const std::size_t c : cand) {
+      if (removed_at_[c] < t) continue;
+      if (work) ++*work;
+      if (removable(in, c, t)) {
+        removed = true;
+        if (removed_at_[c] != t) {
+          touch(c, in[c]);
+          removed_at_[c] = t;
+        }
+      } else if (removed_at_[c] == t) {
+        touch(c, in[c]);
+        removed_at_[c] = kNever;
+      }
+    }
+    if (removed) {
+      quiet = 0;
+      last = t;
+    } else {
+      ++quiet;
+    }
+    // Past the stored run's last removal, four quiet steps of the changed cells end it.
+    if (quiet >= 4 && t - 3 >= old_steps) break;
+  }
+  steps_ = std::max(old_steps, last + 1);
+  std::vector<Delta> out;
+  for (const Rec& rec : recs) {
+    rec_of_[rec.cell] = -1;
+    const std::uint8_t was = rec.old_in && rec.old_removed_at == kNever ? 1 : 0;
+    const std::uint8_t now = in[rec.cell] && removed_at_[rec.cell] == kNever ? 1 : 0;
+    if (was == now) continue;
+    out_[rec.cell] = now;
+    out.push_back({rec.cell, was});
+  }
+  return out;
+}
+
+bool ParallelPruning::walk(const std::vector<std::uint8_t>& in, std::size_t e, double max_len,
+                           std::vector<std::size_t>& path) const {
+  path.assign(1, e);
+  std::size_t prev = e, cur = e;
+  double length = 0.0;
+  while (cur == e || skeleton_degree(in, r_, cur) < 3) {
+    if (length >= max_len) return false;  // longer than any threshold: kept
+    // Next cell: a neighbour not yet on the path, straight neighbours first.
+    std::size_t next = cur;
+    double step = 0.0;
+    for (int pass = 0; pass < 2 && next == cur; ++pass)
+      for (int k = pass; k < 8; k += 2) {
+        const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cur) + r_.offset(k));
+        if (!in[j] || j == prev) continue;
+        const auto back = std::min<std::ptrdiff_t>(3, static_cast<std::ptrdiff_t>(path.size()));
+        if (std::find(path.end() - back, path.end(), j) != path.end()) continue;
+        next = j;
+        step = pass == 0 ? 1.0 : std::sqrt(2.0);
+        break;
+      }
+    if (next == cur) return false;  // the other end of an isolated branch: never pruned
+    length += step;
+    prev = cur;
+    cur = next;
+    path.push_back(cur);
+  }
+  const double threshold =
+      std::max(min_cells_, ratio_ * std::sqrt(static_cast<double>((*d2_)[cur])));
+  if (length >= threshold) return false;
+  path.pop_back();  // the junction stays
+  return true;
+}
+
+void ParallelPruning::build(const std::vector<std::uint8_t>& in,
+                            const std::vector<std::int64_t>& d2, double max_len) {
+  d2_ = &d2;
+  const std::size_t n = in.size();
+  owner_.assign(n, -1);
+  seen_.assign(n, 0);
+  epoch_ = 0;
+  spurs_.clear();
+  std::vector<std::size_t> path;
+  for (std::size_t c = 0; c < n; ++c) {
+    if (!in[c] || skeleton_degree(in, r_, c) != 1 || !walk(in, c, max_len, path)) continue;
+    for (const std::size_t p : path)
+      owner_[p] = static_cast<std::int64_t>(c);
+    spurs_.emplace(c, path);
+  }
+  out_.assign(n, 0);
+  for (std::size_t c = 0; c < n; ++c)
+    out_[c] = in[c] && owner_[c] < 0 ? 1 : 0;
+}
+
+std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
+                                           const std::vector<Delta>& in_changes,
+                                           const std::vector<std::int64_t>& d2,
+                                           const std::vector<std::size_t>& key_changes,
+                                           double max_len, std::size_t* work) {
+  d2_ = &d2;
+  std::vector<std::size_t> dirty;
+  for (const Delta& d : in_changes)
+    dirty.push_back(d.cell);
+  for (const std::size_t k : key_changes)  // the clearance matters at junctions only
+    if (in[k] && skeleton_degree(in, r_, k) >= 3) dirty.push_back(k);
+  if (dirty.empty()) return {};
+  const auto w = static_cast<std::ptrdiff_t>(r_.width);
+  const auto h = static_cast<std::ptrdiff_t>(r_.height);
+  // The cells within 2 of a dirty cell (a spur's decision reads its path, its junction and
+  // their 3x3 neighbourhoods; the junction touches the path).
+  auto around = [&](std::size_t c, auto&& f) {
+    const auto x = static_cast<std::ptrdiff_t>(c) % w, y = static_cast<std::ptrdiff_t>(c) / w;
+    for (std::ptrdiff_t yy = std::max<std::ptrdiff_t>(0, y - 2); yy <= std::min(h - 1, y + 2); ++yy)
+      for (std::ptrdiff_t xx = std::max<std::ptrdiff_t>(0, x - 2); xx <= std::min(w - 1, x + 2);
+           ++xx)
+        f(static_cast<std::size_t>(yy * w + xx));
+  };
+  // 1. Undo the stored spurs that pass near a dirty cell.
+  std::vector<std::size_t> touched, candidates;
+  for (const std::size_t d : dirty)
+    around(d, [&](std::size_t c) {
+      if (owner_[c] < 0) return;
+      const auto e = static_cast<std::size_t>(owner_[c]);
+      const auto it = spurs_.find(e);
+      for (const std::size_t p : it->second) {
+        owner_[p] = -1;
+        touched.push_back(p);
+      }
+      spurs_.erase(it);
+      candidates.push_back(e);
+    });
+  // 2. The ends whose spur may pass near a dirty cell now: walk out from the set cells near the
+  // dirty ones through cells of at most two neighbours, no farther than the longest spur.
+  if (++epoch_ == 0) {
+    std::fill(seen_.begin(), seen_.end(), 0U);
+    epoch_ = 1;
+  }
+  std::vector<std::pair<std::size_t, int>> queue;
+  for (const std::size_t d : dirty)
+    around(d, [&](std::size_t c) {
+      if (!in[c] || seen_[c] == epoch_) return;
+      seen_[c] = epoch_;
+      queue.emplace_back(c, 0);
+    });
+  const int max_depth = static_cast<int>(std::ceil(max_len)) + 3;
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const auto [c, depth] = queue[q];
+    if (work) ++*work;
+    const int deg = skeleton_degree(in, r_, c);
+    if (deg == 1) candidates.push_back(c);
+    if ((deg >= 3 && depth > 0) || depth >= max_depth) continue;
+    for (int k = 0; k < 8; ++k) {
+      const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + r_.offset(k));
+      if (!in[j] || seen_[j] == epoch_) continue;
+      seen_[j] = epoch_;
+      queue.emplace_back(j, depth + 1);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  std::vector<std::size_t> path;
+  for (const std::size_t e : candidates) {
+    if (!in[e] || owner_[e] >= 0 || skeleton_degree(in, r_, e) != 1) continue;
+    if (!walk(in, e, max_len, path)) continue;
+    for (const std::size_t p : path) {
+      owner_[p] = static_cast<std::int64_t>(e);
+      touched.push_back(p);
+    }
+    spurs_.emplace(e, path);
+  }
+  for (const Delta& d : in_changes)
+    touched.push_back(d.cell);
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  std::vector<Delta> out;
+  for (const std::size_t c : touched) {
+    const std::uint8_t now = in[c] && owner_[c] < 0 ? 1 : 0;
+    if (now == out_[c]) continue;
+    out.push_back({c, out_[c]});
+    out_[c] = now;
+  }
+  return out;
+}
+
+}  // namespace voronav::voronoi::internal

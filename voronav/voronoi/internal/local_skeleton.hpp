@@ -1,0 +1,114 @@
+// Thinning and spur pruning whose result is a function of the input alone (no scan order), so a
+// change of the input can be propagated locally and still give exactly the full-build result.
+//
+// ParallelThinning is a cellular automaton on a padded raster: at step t only the cells of one
+// of four subfields ((x mod 2, y mod 2), cycling) may be removed, all at once. Two cells of one
+// subfield are never 8-adjacent, so removing simple cells of a subfield in parallel keeps the
+// topology exactly as a sequential removal would. A cell c is removed at step t when it is alive,
+// not an end (>= 2 alive neighbours), simple (Yokoi 8-connectivity number 1) and either
+//  - it is the lowest key of a fully alive 2x2 block it belongs to (keeps the result one cell
+//    wide), or
+//  - it is the corner of an L of three cells (the two arms touch diagonally), or
+//  - it has an alive 4-neighbour n with a higher key whose opposite 4-neighbour is not alive
+//    (c is a border cell on the low side of the band: the ridge of the key field is kept).
+// Keys are (squared clearance, cell index), a strict total order. The automaton stops after four
+// quiet steps. Its whole run is stored as the removal step of every cell, so an update replays
+// only the steps and cells whose 3x3 neighbourhood differs from the stored run.
+//
+// ParallelPruning removes, in one simultaneous round, every spur of its input: the path from an
+// end cell to the first junction (>= 3 neighbours) when shorter than
+// max(min_cells, ratio * clearance(junction)). Every spur is found on the unchanged input, so the
+// order of the ends does not matter (two short spurs at one junction both go). An update redoes
+// the spurs that pass within two cells of a changed cell: the stored ones found through the cells'
+// owner, the new ones by walking out from the changed cells along cells of at most two
+// neighbours to the ends, no farther than the longest possible spur.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "voronav/voronoi/internal/skeleton.hpp"
+
+namespace voronav::voronoi::internal {
+
+/// A cell whose value changed, with its value before the change.
+struct Delta {
+  std::size_t cell = 0;
+  std::uint8_t old_value = 0;
+};
+
+class ParallelThinning {
+ public:
+  explicit ParallelThinning(const PaddedRaster& r) : r_(r) {}
+
+  /// Full run on `in` (1 = cell of the input set); key: per padded cell (squared clearance).
+  void build(const std::vector<std::uint8_t>& in, const std::vector<std::int64_t>& key);
+  /// `in` has already changed at in_changes (with their old values); key_changes lists the cells
+  /// whose key changed. Returns the output cells that changed (with their old values).
+  std::vector<Delta> update(const std::vector<std::uint8_t>& in,
+                            const std::vector<Delta>& in_changes,
+                            const std::vector<std::int64_t>& key,
+                            const std::vector<std::size_t>& key_changes, std::size_t* work);
+  [[nodiscard]] const std::vector<std::uint8_t>& out() const { return out_; }
+  /// Steps of the stored run (>= 1 + its last removal step).
+  [[nodiscard]] int steps() const { return steps_; }
+
+ private:
+  static constexpr std::int32_t kNever = 0x7fffffff;
+  [[nodiscard]] bool removable(const std::vector<std::uint8_t>& in, std::size_t c, int t) const;
+  [[nodiscard]] bool key_less(std::size_t a, std::size_t b) const {
+    const std::int64_t ka = (*key_)[a], kb = (*key_)[b];
+    return ka != kb ? ka < kb : a < b;
+  }
+  [[nodiscard]] int subfield(std::size_t c) const {
+    const auto w = static_cast<std::size_t>(r_.width);
+    return static_cast<int>((c % w) & 1U) | static_cast<int>(((c / w) & 1U) << 1U);
+  }
+
+  PaddedRaster r_;
+  const std::vector<std::int64_t>* key_ = nullptr;  // set for the duration of build/update
+  std::vector<std::uint8_t> out_;
+  std::vector<std::int32_t> removed_at_;  // step at which the cell was removed (kNever: kept)
+  int steps_ = 0;                         // >= 1 + the last step that removed a cell
+  // Scratch for update().
+  std::vector<std::int32_t> rec_of_;
+  std::vector<std::uint32_t> seen_;
+  std::uint32_t epoch_ = 0;
+};
+
+class ParallelPruning {
+ public:
+  /// min_cells, ratio: spur threshold max(min_cells, ratio * sqrt(d2(junction))) [cells].
+  ParallelPruning(const PaddedRaster& r, double min_cells, double ratio)
+      : r_(r), min_cells_(min_cells), ratio_(ratio) {}
+
+  /// d2: squared clearance per padded cell; max_len: an upper bound on every spur threshold
+  /// (walks stop there).
+  void build(const std::vector<std::uint8_t>& in, const std::vector<std::int64_t>& d2,
+             double max_len);
+  std::vector<Delta> update(const std::vector<std::uint8_t>& in,
+                            const std::vector<Delta>& in_changes,
+                            const std::vector<std::int64_t>& d2,
+                            const std::vector<std::size_t>& key_changes, double max_len,
+                            std::size_t* work);
+  [[nodiscard]] const std::vector<std::uint8_t>& out() const { return out_; }
+
+ private:
+  // Walks from end e; true (and the cells to remove in path) when the spur is pruned.
+  bool walk(const std::vector<std::uint8_t>& in, std::size_t e, double max_len,
+            std::vector<std::size_t>& path) const;
+
+  PaddedRaster r_;
+  const std::vector<std::int64_t>* d2_ = nullptr;  // set for the duration of build/update
+  double min_cells_ = 0.0;
+  double ratio_ = 0.0;
+  std::vector<std::uint8_t> out_;
+  std::vector<std::int64_t> owner_;  // end of the pruned spur through the cell (-1 none)
+  std::unordered_map<std::size_t, std::vector<std::size_t>> spurs_;  // end -> removed path
+  std::vector<std::uint32_t> seen_;                                  // scratch of update()
+  std::uint32_t epoch_ = 0;
+};
+
+}  // namespace voronav::voronoi::internal
