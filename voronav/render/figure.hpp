@@ -78,6 +78,9 @@ class Figure {
 
   /// Writes .png or .svg (by extension); throws voronav::Error otherwise or on write failure.
   void save(const std::filesystem::path& path) const;
+  /// The picture save() writes to a PNG, in memory: width_px() * height_px() * 4 bytes of 8-bit
+  /// RGBA (not premultiplied), top row first (the Python binding's to_rgb()).
+  [[nodiscard]] std::vector<std::uint8_t> to_rgba() const;
 
   [[nodiscard]] int width_px() const { return width_px_; }
   [[nodiscard]] int height_px() const { return height_px_; }
