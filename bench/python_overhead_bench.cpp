@@ -25,9 +25,9 @@ namespace {
 fs::path data_dir() {
   if (const char* env = std::getenv("VORONAV_MOVINGAI_DIR")) return env;
   const fs::path src(VORONAV_SOURCE_DIR);
-  for (const fs::path& p : {src / ".." / "shared" / "data" / "movingai",
-                            src / ".." / ".." / "shared" / "data" / "movingai",
-                            fs::path("/work/shared/data/movingai")})
+  for (const fs::path& p :
+       {src / ".." / "shared" / "data" / "movingai",
+        src / ".." / ".." / "shared" / "data" / "movingai", fs::path("/work/shared/data/movingai")})
     if (fs::exists(p)) return p;
   return src / "data" / "movingai";
 }
@@ -49,16 +49,14 @@ void BM_MovingAiQuery(benchmark::State& state) {
   const std::size_t sample = sample_env ? std::stoul(sample_env) : 200;
   const fs::path dir = data_dir();
   const OccupancyGrid map = io::load_movingai_map(dir / (name + ".map"));
-  const auto queries =
-      sample_queries(io::load_movingai_scen(dir / (name + ".map.scen")), sample);
+  const auto queries = sample_queries(io::load_movingai_scen(dir / (name + ".map.scen")), sample);
   const BinaryGrid grid = binarize(map);
   planning::AStarPlanner planner;
   double length = 0.0;
   for (auto _ : state) {
     for (const auto& q : queries) {
-      const auto r =
-          planner.plan(grid, io::movingai_to_cell(q.start_x, q.start_y, map.height()),
-                       io::movingai_to_cell(q.goal_x, q.goal_y, map.height()));
+      const auto r = planner.plan(grid, io::movingai_to_cell(q.start_x, q.start_y, map.height()),
+                                  io::movingai_to_cell(q.goal_x, q.goal_y, map.height()));
       length += r.length_cells;
     }
   }

@@ -64,7 +64,11 @@ def main() -> None:
     for u, v, _ in topo.edge_list():  # networkx.Graph().add_edges_from(topo.edge_list()) works too
         ax.plot([centres[u].x, centres[v].x], [centres[u].y, centres[v].y], "b-", lw=1)
     ax.set_title(f"{len(topo.regions)} regions, {len(topo.critical_points)} critical points")
+    known = np.argwhere(grid.array >= 0)  # crop to the known part of the map
+    (y0, x0), (y1, x1) = known.min(axis=0), known.max(axis=0) + 1
     for ax in axes:
+        ax.set_xlim(ox + x0 * grid.resolution, ox + x1 * grid.resolution)
+        ax.set_ylim(oy + y0 * grid.resolution, oy + y1 * grid.resolution)
         ax.set_xlabel("x [m]")
         ax.set_ylabel("y [m]")
     fig.tight_layout()

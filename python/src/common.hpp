@@ -36,9 +36,9 @@ template <typename T>
 GridMap<T> grid_from_array(const py::array& in, double resolution, const Pose2& origin,
                            const char* what) {
   if (in.ndim() != 2)
-    throw Error(what, 0,
-                "expected a 2-D array (height, width), got " + std::to_string(in.ndim()) +
-                    " dimensions");
+    throw Error(
+        what, 0,
+        "expected a 2-D array (height, width), got " + std::to_string(in.ndim()) + " dimensions");
   auto arr = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(in);
   if (!arr) throw Error(what, 0, "cannot convert the array to the grid's dtype");
   GridGeometry g{static_cast<int>(arr.shape(1)), static_cast<int>(arr.shape(0)), resolution,

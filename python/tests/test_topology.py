@@ -53,8 +53,9 @@ def test_distance_transform_values():
     assert df.squared_distance.array[4, 7] == pytest.approx(9.0)
     assert df.squared_distance.array[0, 0] == pytest.approx(32.0)
     assert df.distance_m.array[4, 7] == pytest.approx(1.5)
-    infl = vn.field.inflate(g, 1.01)
-    assert infl.array.sum() == 5  # the cell and its 4 neighbours at 0.5 m
+    assert vn.field.inflate(g, 0.51).array.sum() == 5  # the cell and its 4 neighbours at 0.5 m
+    # < 1.01 m = 2.02 cells: distances 0, 1 (x4), sqrt 2 (x4), 2 (x4).
+    assert vn.field.inflate(g, 1.01).array.sum() == 13
 
 
 def gvd_fixture():
