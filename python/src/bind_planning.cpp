@@ -2,6 +2,8 @@
 // rebinding) plus the topological planner ("topo"), RAS with its numbered regions, and results
 // with status, path in cells and metres, length, expanded. Status results are returned, never
 // raised; the GIL is released while planning.
+#include <mutex>
+
 #include "common.hpp"
 #include "voronav/planning/astar.hpp"
 #include "voronav/planning/planner_factory.hpp"
@@ -50,10 +52,14 @@ struct PyPlanResult {
   std::string planner;
 };
 
-/// Any GridPlanner, made by name.
+/// Any GridPlanner, made by name. A planner is a reusable workspace (its buffers are reused by
+/// every query), and plan() runs without the GIL, so two Python threads sharing one Planner are
+/// serialized by the mutex instead of racing on those buffers.
 struct PyPlanner {
   std::unique_ptr<planning::GridPlanner> p;
+  std::unique_ptr<std::mutex> busy = std::make_unique<std::mutex>();
   PyPlanResult plan(const BinaryGrid& grid, Cell start, Cell goal) {
+    const std::lock_guard<std::mutex> lock(*busy);
     return {p->plan(grid, start, goal), grid.geometry(), std::string(p->name())};
   }
 };

@@ -199,6 +199,8 @@ void bind_sim(py::module_& m) {
       .def_readwrite("collect_s", &sm::NetSimOptions::collect_s)
       .def_readwrite("repair_timeout_s", &sm::NetSimOptions::repair_timeout_s)
       .def_readwrite("seed", &sm::NetSimOptions::seed)
+      .def_readwrite("record", &sm::NetSimOptions::record,
+                     "Return 'route' (source's final route [m]) and 'steps' (positions per step)")
       .def("scale_options", &sm::NetSimOptions::scale_options)
       .def("__repr__", [](const sm::NetSimOptions& o) {
         return "netsim.Options(method=" + std::string(sm::to_string(o.method)) + ")";
@@ -228,11 +230,26 @@ void bind_sim(py::module_& m) {
           py::gil_scoped_release release;
           r = sm::run_netsim(s, o);
         }
-        return metrics_dict(r.metrics);
+        py::dict d = metrics_dict(r.metrics);
+        if (o.record) {  // the source's final route [m] and the robots' positions per step
+          py::list route, steps;
+          for (const Vec2& v : r.recording.route)
+            route.append(py::make_tuple(v.x, v.y));
+          for (const auto& st : r.recording.steps) {
+            py::list pos;
+            for (const Vec2& v : st.positions)
+              pos.append(py::make_tuple(v.x, v.y));
+            steps.append(py::dict(py::arg("t_s") = st.t_s, py::arg("positions") = pos));
+          }
+          d["route"] = route;
+          d["steps"] = steps;
+        }
+        return d;
       },
       py::arg("scenario"), py::arg("options") = py::none(),
       "Runs one scenario; keywords override Options fields (method='centralized', ...). "
-      "Returns the metrics dict with 'robots': one record per robot.");
+      "Returns the metrics dict with 'robots': one record per robot (and 'route', 'steps' "
+      "with record=True).");
 
   auto xp =
       m.def_submodule("explore", "Swarm exploration (seed 004): tree, frontier, coordinated.");

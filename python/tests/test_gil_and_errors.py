@@ -41,6 +41,25 @@ def test_second_thread_progresses_during_a_long_call(data):
     assert max(during) > 1000, during
 
 
+def test_one_planner_shared_by_threads_gives_sequential_results(data):
+    grid = vn.binarize(vn.io.load_movingai_map(str(data / "movingai/den312d.map")))
+    queries = vn.io.load_movingai_scen(str(data / "movingai/den312d.map.scen"))[::40]
+    planner = vn.Planner("astar")
+    expected = [planner.plan(grid, q.start_cell, q.goal_cell).length_cells for q in queries]
+    got: dict[int, list[float]] = {0: [], 1: []}
+
+    def work(k: int) -> None:
+        for q in queries:
+            got[k].append(planner.plan(grid, q.start_cell, q.goal_cell).length_cells)
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in (0, 1)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert got[0] == expected and got[1] == expected
+
+
 def test_error_messages_name_file_and_line(tmp_path):
     missing = tmp_path / "nope.yaml"
     with pytest.raises(vn.Error, match=f"{missing}: map file not found"):

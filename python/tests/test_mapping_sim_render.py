@@ -51,8 +51,11 @@ def test_netsim_run_metrics_dict():
     assert res["success"] is True
     assert len(res["robots"]) == 3 and {"work", "travel_m", "sent_bytes"} <= set(res["robots"][0])
     assert res["traffic_bytes"] == sum(r["sent_bytes"] for r in res["robots"])
-    cen = vn.netsim.run(sc, vn.netsim.Options(method="centralized"), time_limit_s=60.0)
+    cen = vn.netsim.run(sc, vn.netsim.Options(method="centralized"), time_limit_s=60.0, record=True)
     assert cen["success"] is True
+    route = cen["route"]
+    assert len(route) >= 2 and route[-1] == pytest.approx((9.0, 3.0), abs=0.2)
+    assert len(cen["steps"]) > 1 and len(cen["steps"][0]["positions"]) == 3
     with pytest.raises(vn.Error, match="unknown option 'sped'"):
         vn.netsim.run(sc, sped=2.0)
 

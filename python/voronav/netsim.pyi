@@ -34,6 +34,7 @@ class Options:
     collect_s: float
     repair_timeout_s: float
     seed: int
+    record: bool
     def __init__(self, **kwargs: object) -> None: ...
     def scale_options(self) -> Options: ...
 
