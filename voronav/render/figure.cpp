@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <memory>
 #include <numbers>
 
 #include "voronav/core/error.hpp"
@@ -304,7 +306,11 @@ void Figure::save(const std::filesystem::path& path) const {
     throw Error(path.string(), 0,
                 "render::Figure: a picture needs a title (FigureOptions::title) saying what it "
                 "shows");
-  internal::save_surface(path, width_px_, height_px_, [this](cairo_t* cr) {
+  internal::save_surface(path, width_px_, height_px_, [this](cairo_t* cr) { draw(cr); });
+}
+
+void Figure::draw(cairo_t* cr) const {
+  {
     for (const auto& op : ops_)
       op(cr);
     // Scale bar, lower left.
@@ -359,7 +365,41 @@ void Figure::save(const std::filesystem::path& path) const {
     }
     entries.insert(entries.end(), legend_.begin(), legend_.end());
     if (!entries.empty()) internal::draw_legend(cr, entries, width_px_, height_px_, /*top=*/false);
-  });
+  }
+}
+
+std::vector<std::uint8_t> Figure::to_rgba() const {
+  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
+      cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width_px_, height_px_),
+      cairo_surface_destroy);
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
+    throw Error("render::Figure: cannot create the picture in memory");
+  cairo_t* cr = cairo_create(surface.get());
+  draw(cr);
+  cairo_destroy(cr);
+  cairo_surface_flush(surface.get());
+  const unsigned char* data = cairo_image_surface_get_data(surface.get());
+  const int stride = cairo_image_surface_get_stride(surface.get());
+  std::vector<std::uint8_t> out(static_cast<std::size_t>(width_px_) *
+                                static_cast<std::size_t>(height_px_) * 4);
+  std::size_t k = 0;
+  for (int y = 0; y < height_px_; ++y) {
+    const unsigned char* row = data + static_cast<std::ptrdiff_t>(y) * stride;
+    for (int x = 0; x < width_px_; ++x) {
+      std::uint32_t p = 0;  // premultiplied ARGB in native byte order
+      std::memcpy(&p, row + static_cast<std::ptrdiff_t>(x) * 4, 4);
+      const std::uint32_t a = p >> 24;
+      const auto un = [a](std::uint32_t v) {
+        return static_cast<std::uint8_t>(
+            a == 0 ? 0 : std::min<std::uint32_t>(255, (v * 255 + a / 2) / a));
+      };
+      out[k++] = un((p >> 16) & 0xff);
+      out[k++] = un((p >> 8) & 0xff);
+      out[k++] = un(p & 0xff);
+      out[k++] = static_cast<std::uint8_t>(a);
+    }
+  }
+  return out;
 }
 
 }  // namespace voronav::render

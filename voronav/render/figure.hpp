@@ -95,6 +95,9 @@ class Figure {
   void save(const std::filesystem::path& path) const;
   /// The scale bar save() draws: its length in the figure's unit and in pixels (0 without one).
   [[nodiscard]] std::pair<double, double> scale_bar() const;
+  /// The picture save() writes to a PNG, in memory: width_px() * height_px() * 4 bytes of 8-bit
+  /// RGBA (not premultiplied), top row first (the Python binding's to_rgb()).
+  [[nodiscard]] std::vector<std::uint8_t> to_rgba() const;
 
   [[nodiscard]] int width_px() const { return width_px_; }
   [[nodiscard]] int height_px() const { return height_px_; }
@@ -108,6 +111,8 @@ class Figure {
   /// Throws voronav::Error when a raster's size differs from the figure's grid.
   void check_raster(int width, int height, const char* what) const;
   void raster(std::function<std::uint32_t(Cell)> argb);
+  /// Replays the drawing calls, then the scale bar, colour bars and legend (save and to_rgba).
+  void draw(_cairo* cr) const;
 
   GridGeometry geometry_;                 ///< of the drawn part (the crop)
   Cell offset_{};                         ///< grid cell of the crop's cell (0, 0)

@@ -1,0 +1,90 @@
+"""mapping (log-odds, laser/sonar insert), netsim and explore (metrics dicts), render (to_rgb)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import voronav as vn
+
+
+def box_world():
+    b = np.zeros((40, 40), dtype=np.uint8)
+    b[0, :] = b[-1, :] = b[:, 0] = b[:, -1] = 1
+    return vn.BinaryGrid(b, resolution=0.1)
+
+
+def test_laser_insert_marks_walls_and_clears_free_space():
+    world = box_world()
+    pose = vn.Pose2(2.0, 2.0, 0.0)
+    bearings, ranges = vn.mapping.simulate_laser_scan(world, pose, beams=180)
+    assert bearings.shape == ranges.shape == (180,)
+    assert ranges.min() == pytest.approx(1.9, abs=0.11)
+    m = vn.mapping.OccupancyMap(world.geometry)
+    lo = m.log_odds.array
+    assert lo.dtype == np.float32 and np.shares_memory(lo, m.log_odds.array)
+    m.insert_laser_scan(pose, bearings, ranges)
+    assert m.probability((20, 20)) < 0.5  # at the sensor: cleared
+    assert m.probability((39, 20)) > 0.5  # the east wall
+    assert lo[20, 39] > 0  # the view sees the update (zero copy)
+    occ = m.to_occupancy_grid()
+    assert occ.array[20, 39] > 50
+    with pytest.raises(vn.Error, match="differ in length"):
+        m.insert_laser_scan(pose, [0.0, 1.0], [1.0])
+
+
+def test_sonar_insert():
+    m = vn.mapping.OccupancyMap(vn.GridGeometry(40, 40, 0.1))
+    m.insert_sonar(vn.Pose2(0.5, 2.0, 0.0), 2.0, vn.mapping.SonarModelOptions(half_angle=math.radians(10)))
+    assert m.probability(m.log_odds.world_to_cell(vn.Vec2(2.5, 2.0))) > 0.5
+    assert m.probability(m.log_odds.world_to_cell(vn.Vec2(1.2, 2.0))) < 0.5
+
+
+def test_netsim_run_metrics_dict():
+    world = np.full((60, 100), 0, dtype=np.int8)
+    world[0, :] = world[-1, :] = world[:, 0] = world[:, -1] = 100
+    grid = vn.OccupancyGrid(world, resolution=0.1)
+    sc = vn.netsim.Scenario(grid, [(1.0, 3.0), (4.0, 3.0), (7.0, 3.0)], destination=(9.0, 3.0))
+    res = vn.netsim.run(sc, method="decentralized", time_limit_s=60.0)
+    assert res["success"] is True
+    assert len(res["robots"]) == 3 and {"work", "travel_m", "sent_bytes"} <= set(res["robots"][0])
+    assert res["traffic_bytes"] == sum(r["sent_bytes"] for r in res["robots"])
+    cen = vn.netsim.run(sc, vn.netsim.Options(method="centralized"), time_limit_s=60.0, record=True)
+    assert cen["success"] is True
+    route = cen["route"]
+    assert len(route) >= 2 and route[-1] == pytest.approx((9.0, 3.0), abs=0.2)
+    assert len(cen["steps"]) > 1 and len(cen["steps"][0]["positions"]) == 3
+    with pytest.raises(vn.Error, match="unknown option 'sped'"):
+        vn.netsim.run(sc, sped=2.0)
+
+
+def test_explore_run_dict():
+    world = vn.explore.paper_world(0.1)
+    res = vn.explore.run(world, method="frontier", robots=2, time_limit=20.0, seed=1)
+    assert 0.0 < res["coverage"] <= 1.0
+    assert isinstance(res["team_map"], vn.OccupancyGrid)
+    assert res["robots"] == 2
+
+
+def test_figure_to_rgb_and_save(tmp_path):
+    g = vn.OccupancyGrid(np.zeros((10, 20), dtype=np.int8))
+    with pytest.raises(vn.Error, match="title"):  # every picture says what it shows
+        vn.render.Figure(g.geometry, pixels_per_cell=4).save(str(tmp_path / "untitled.png"))
+    fig = vn.render.Figure(g.geometry, pixels_per_cell=4, title="a path")
+    fig.occupancy(g).path([(0, 0), (19, 9)], color="red")
+    rgba = fig.to_rgba()
+    assert rgba.shape == (28 + 40, 80, 4) and rgba.dtype == np.uint8  # title band + map
+    assert tuple(rgba[28 + 2, 40, :3]) == (255, 255, 255)  # free cells are white
+    red = (rgba[..., 0] > 200) & (rgba[..., 1] < 80)
+    assert red.sum() > 0
+    rgb = fig.to_rgb()
+    assert rgb.shape == (28 + 40, 80, 3) and np.array_equal(rgb[red], rgba[red][:, :3])
+    out = tmp_path / "fig.png"
+    fig.save(str(out))
+    assert out.stat().st_size > 100
+    with pytest.raises(vn.Error, match="expected .png or .svg"):
+        fig.save(str(tmp_path / "fig.jpg"))
+    with pytest.raises(vn.Error, match="color"):
+        fig.point((1.0, 1.0), color="mauve")

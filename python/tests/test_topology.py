@@ -1,0 +1,95 @@
+"""field / voronoi / topology: equal to the CLI on a floor plan; DynamicGvd equals a rebuild."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import voronav as vn
+
+
+def office(data):
+    # The CLI's `topo` reads images with free_from = occupied_below = 250.
+    return vn.io.load_floorplan(str(data / "floorplans/office_a.png"), resolution=0.05, free_from=250,
+                                occupied_below=250)
+
+
+def test_floorplan_regions_equal_cli(data, cli):
+    blocked = vn.binarize(office(data))
+    topo = vn.topology.build_topological_map(blocked)
+    out = cli("topo", "--map", str(data / "floorplans/office_a.png"))
+    assert len(topo.regions) == out["regions"] > 1
+    assert len(topo.critical_points) == len(out["critical_points"])
+    assert int((topo.diagram.array != 0).sum()) == out["voronoi_cells"]
+    labels = topo.region.array
+    assert labels.dtype == np.int32 and labels.shape == blocked.shape
+    assert set(np.unique(labels[labels >= 0])) == set(range(len(topo.regions)))
+    assert (labels[blocked.array == 1] == -1).all()
+    edges = topo.edge_list()
+    assert [(a, b) for a, b, _ in edges] == [(e["a"], e["b"]) for e in out["graph"]["edges"]]
+    for a, b, attrs in edges:  # networkx: Graph().add_edges_from(edges)
+        assert isinstance(a, int) and isinstance(b, int) and attrs["weight"] == attrs["length_m"] > 0
+    cp = topo.critical_points[0]
+    assert len(cp.line) > 0 and cp.clearance_m > 0
+
+
+def test_topo_plan_status_returned(data):
+    blocked = vn.binarize(office(data))
+    topo = vn.topology.build_topological_map(blocked)
+    wall = tuple(int(v) for v in np.argwhere(blocked.array == 1)[0][::-1])
+    free = tuple(int(v) for v in np.argwhere(blocked.array == 0)[0][::-1])
+    assert topo.plan(wall, free).status == "start_blocked"
+    c0 = topo.regions[0].centre
+    c1 = topo.regions[-1].centre
+    p = topo.plan(c0, c1)
+    assert p.ok and p.regions[0] == 0 and p.regions[-1] == len(topo.regions) - 1
+
+
+def test_distance_transform_values():
+    b = np.zeros((9, 9), dtype=np.uint8)
+    b[4, 4] = 1
+    g = vn.BinaryGrid(b, resolution=0.5)
+    df = vn.field.distance_transform(g)
+    assert df.squared_distance.array[4, 7] == pytest.approx(9.0)
+    assert df.squared_distance.array[0, 0] == pytest.approx(32.0)
+    assert df.distance_m.array[4, 7] == pytest.approx(1.5)
+    assert vn.field.inflate(g, 0.51).array.sum() == 5  # the cell and its 4 neighbours at 0.5 m
+    # < 1.01 m = 2.02 cells: distances 0, 1 (x4), sqrt 2 (x4), 2 (x4).
+    assert vn.field.inflate(g, 1.01).array.sum() == 13
+
+
+def gvd_fixture():
+    b = np.zeros((40, 60), dtype=np.uint8)
+    b[10:30, 20:24] = 1
+    b[5:8, 40:50] = 1
+    return vn.BinaryGrid(b)
+
+
+def test_gvd_and_dynamic_update_equal_rebuild():
+    g = gvd_fixture()
+    gvd = vn.voronoi.build_gvd(g)
+    assert gvd.diagram.array.dtype == np.uint8 and gvd.diagram.array.sum() > 0
+    assert gvd.clearance.array.dtype == np.float32
+    dyn = vn.voronoi.DynamicGvd(g)
+    assert np.array_equal(dyn.snapshot().diagram.array, gvd.diagram.array)
+    changes = [((x, 30), True) for x in range(30, 36)] + [((21, 20), False)]
+    stats = dyn.update(changes)
+    assert stats["changed_cells"] == 7
+    arr = g.array.copy()
+    for (x, y), blk in changes:
+        arr[y, x] = 1 if blk else 0
+    rebuilt = vn.voronoi.build_gvd(vn.BinaryGrid(arr))
+    assert np.array_equal(dyn.snapshot().diagram.array, rebuilt.diagram.array)
+    with pytest.raises(vn.Error):
+        dyn.update([((100, 100), True)])
+
+
+def test_labeled_voronoi_and_graph():
+    g = gvd_fixture()
+    lv = vn.voronoi.build_labeled_voronoi(g, vn.voronoi.CaVoronoiOptions(labels="obstacle_component"))
+    assert lv.diagram.array.sum() > 0 and lv.steps > 0
+    assert lv.label.array.dtype == np.int32
+    graph = vn.voronoi.build_voronoi_graph(vn.voronoi.build_gvd(g))
+    assert len(graph.nodes) >= 2
+    for a, b, attrs in graph.edge_list():
+        assert 0 <= a < len(graph.nodes) and 0 <= b < len(graph.nodes) and attrs["length_m"] > 0

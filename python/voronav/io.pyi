@@ -1,0 +1,46 @@
+# voronav.io: map files (ROS map YAML, Moving AI .map/.scen, floor-plan images).
+from enum import Enum
+from typing import List, Tuple
+
+from . import OccupancyGrid, Pose2, PoseLike
+
+class RosMapMode(Enum):
+    trinary = ...
+    scale = ...
+    raw = ...
+
+class RosMapMetadata:
+    image: str
+    resolution: float  # [m/cell]
+    origin: Pose2
+    negate: bool
+    occupied_thresh: float
+    free_thresh: float
+    mode: RosMapMode
+
+class MovingAiQuery:
+    bucket: int
+    map: str
+    map_width: int
+    map_height: int
+    start_x: int  # file frame, y down
+    start_y: int
+    goal_x: int
+    goal_y: int
+    optimal_length: float  # [cells]
+    optimal_rounding: float
+    line: int
+    start_cell: Tuple[int, int]  # voronav cell, row 0 at the bottom
+    goal_cell: Tuple[int, int]
+
+def load_map(path: str, image_resolution: float = ..., occupied_below: int = ..., free_from: int = ...) -> OccupancyGrid: ...
+def map_format(path: str) -> str: ...
+def read_ros_map(yaml_path: str) -> Tuple[OccupancyGrid, RosMapMetadata]: ...
+def load_ros_map(yaml_path: str) -> OccupancyGrid: ...
+def save_ros_map(grid: OccupancyGrid, yaml_path: str, mode: RosMapMode | str = ..., image_name: str = ...) -> str: ...
+def load_movingai_map(path: str) -> OccupancyGrid: ...
+def save_movingai_map(grid: OccupancyGrid, path: str) -> None: ...
+def load_movingai_scen(path: str) -> List[MovingAiQuery]: ...
+def save_movingai_scen(queries: List[MovingAiQuery], path: str) -> None: ...
+def check_scen_fits(queries: List[MovingAiQuery], grid: OccupancyGrid, scen_path: str) -> None: ...
+def load_floorplan(path: str, resolution: float = ..., origin: PoseLike = ..., occupied_below: int = ..., free_from: int = ...) -> OccupancyGrid: ...
