@@ -12,6 +12,7 @@
 #include "cli_common.hpp"
 #include "command.hpp"
 #include "recordings.hpp"
+#include "voronav/bag/command_bags.hpp"
 #include "voronav/coordination/coordinator.hpp"
 #include "voronav/coordination/scenario.hpp"
 #include "voronav/coordination/schedule_io.hpp"
@@ -35,6 +36,7 @@ struct CoordArgs {
   double node_spacing = -1.0;
   bool no_reduction = false;
   bool json = false;
+  std::filesystem::path mcap;
 };
 
 void draw_trajectories(const co::Scenario& sc, const std::vector<co::Agent>& agents,
@@ -225,6 +227,9 @@ void run(const CoordArgs& a) {
                                   (a.out / "index.html").string());
     }
   }
+  if (!a.mcap.empty())
+    bag::write_coordination_bag(a.mcap, sc.map ? sc.map->grid : OccupancyGrid{}, agents, r,
+                                opt.map);
   if (a.json) {
     print_json(out);
   } else {
@@ -265,6 +270,9 @@ void setup(CLI::App& app) {
   cmd->add_option("--node-spacing", a->node_spacing, "path node spacing [m] (0 = automatic)");
   cmd->add_flag("--json", a->json, "JSON output");
   cmd->add_option("--out", a->out, "folder for schedule.json/.yaml and pictures");
+  cmd->add_option("--mcap", a->mcap,
+                  "Write a ROS 2 bag (MCAP): /map, /robot_N/plan, /tf, /robots, /collision_boxes, "
+                  "/events (docs/ros.md)");
   cmd->callback([a] { run(*a); });
 }
 

@@ -7,6 +7,7 @@
 #include "command.hpp"
 #include "plan_picture.hpp"
 #include "plan_ras.hpp"
+#include "voronav/bag/command_bags.hpp"
 #include "voronav/planning/planner_factory.hpp"
 #include "voronav/topology/topo_planner.hpp"
 
@@ -24,6 +25,7 @@ struct PlanArgs {
   std::filesystem::path png, svg;
   bool json = false;
   RasCliArgs ras;
+  std::filesystem::path mcap;
 };
 
 void run(const PlanArgs& a) {
@@ -54,6 +56,14 @@ void run(const PlanArgs& a) {
         save_plan_picture(pic, out);
       }
     }
+  }
+  if (!a.mcap.empty()) {
+    std::vector<Vec2> world;
+    for (Cell c : r.path)
+      world.push_back(ctx.map.grid.geometry().cell_center(c));
+    const auto& geo = ctx.map.grid.geometry();
+    bag::write_plan_bag(a.mcap, ctx.map.grid, geo.cell_center(start), geo.cell_center(goal), world,
+                        std::string(planner->name()));
   }
   if (a.json) {
     nlohmann::json path = nlohmann::json::array(), world = nlohmann::json::array();
@@ -116,6 +126,8 @@ void setup(CLI::App& app) {
                 "JSON output: status, length [m], cells (length in cells), expanded, time_ms, "
                 "path (cells), path_world (m)");
   add_ras_options(cmd, args->ras);
+  cmd->add_option("--mcap", args->mcap,
+                  "Write the run as a ROS 2 bag (MCAP): /map, /plan, /tf, /robots (docs/ros.md)");
   cmd->callback([args] { run(*args); });
 }
 

@@ -11,6 +11,7 @@
 #include "cli_common.hpp"
 #include "command.hpp"
 #include "topo_pictures.hpp"
+#include "voronav/bag/command_bags.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/io/map_loader.hpp"
 #include "voronav/render/figure.hpp"
@@ -27,6 +28,7 @@ struct TopoArgs {
   int free_from = 250;
   double min_region_area = 1.0;
   bool json = false;
+  std::filesystem::path mcap;
 };
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
@@ -51,6 +53,7 @@ void run(const TopoArgs& a) {
   const double build_ms = ms_since(t0);
   const double cpu_ms = 1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
   const GridGeometry& geo = m.geometry;
+  if (!a.mcap.empty()) bag::write_topology_bag(a.mcap, loaded.grid, m);
 
   nlohmann::json j;
   j["map"] = a.map.string();
@@ -143,6 +146,8 @@ void setup(CLI::App& app) {
                   "Regions smaller than this [m^2] are merged into a neighbour")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  cmd->add_option("--mcap", args->mcap,
+                  "Write a ROS 2 bag (MCAP): /map, /voronoi, /topology (docs/ros.md)");
   cmd->add_flag("--json", args->json,
                 "JSON output: critical_points, regions (count), graph {nodes, edges}, time_ms, "
                 "segmentation");
