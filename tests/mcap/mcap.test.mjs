@@ -14,12 +14,14 @@ import { parse } from "@foxglove/rosmsg";
 import { MessageReader } from "@foxglove/rosmsg2-serialization";
 import { decompress as zstdDecompress } from "fzstd";
 
+// Also: node mcap.test.mjs --check FILE.mcap...  (the generic checks on any bag, e.g. demo's)
 const [bin, data, work] = process.argv.slice(2);
-if (!bin || !data || !work) {
-  console.error("usage: node mcap.test.mjs VORONAV_BINARY DATA_DIR WORK_DIR");
+const checkOnly = bin === "--check";
+if (!checkOnly && (!bin || !data || !work)) {
+  console.error("usage: node mcap.test.mjs VORONAV_BINARY DATA_DIR WORK_DIR | --check FILE...");
   process.exit(2);
 }
-fs.mkdirSync(work, { recursive: true });
+if (!checkOnly) fs.mkdirSync(work, { recursive: true });
 
 const decompressHandlers = { zstd: (buf, size) => zstdDecompress(buf, new Uint8Array(Number(size))) };
 
@@ -296,6 +298,14 @@ test("explore", async () => {
   near(topics["/tf"].at(-1).t, out.sim_time_s ?? topics["/tf"].at(-1).t, 1.0, "run length");
 });
 
+if (checkOnly) {
+  checks.length = 0;
+  for (const file of process.argv.slice(3))
+    test(file, async () => {
+      const { topics } = await readBag(file);
+      console.log(Object.entries(topics).map(([t, m]) => `${t}: ${m.length}`).join(", "));
+    });
+}
 let failed = 0;
 for (const [name, fn] of checks) {
   try {
