@@ -418,6 +418,7 @@ struct Demo {
         {"method", "tree"},
         {"robots", o.robots},
         {"coverage_pct", 100.0 * r.coverage},
+        {"coverage", r.coverage},  // a fraction, as in exploration.json (issue 19)
         {"t90_s", r.t90_s ? nlohmann::json(*r.t90_s) : nlohmann::json(nullptr)},
         {"distance_m", r.distance_m},
         {"collisions", r.collisions},

@@ -61,6 +61,10 @@ void run(const TopoArgs& a) {
   j["width"] = geo.width;
   j["height"] = geo.height;
   j["resolution"] = geo.resolution;
+  j["frame_id"] = "map";
+  j["cell_frame"] = "grid_y_up";  // "cell" fields: grid cells, row 0 at the bottom
+  j["origin"] = pose_json(geo.origin);
+  j["resolution_unit"] = "m/cell";
   j["time_ms"] = build_ms;
   j["cpu_ms"] = cpu_ms;
   std::size_t diagram_cells = 0;

@@ -48,10 +48,20 @@ nlohmann::json to_json(const Schedule& s) {
         {"delay", s.delays[i]}, {"arrival", arrival}, {"path", path}};
     j["a_max"] = std::isinf(a.path.limits().a_max) ? nlohmann::json(nullptr)
                                                    : nlohmann::json(a.path.limits().a_max);
+    // Timed waypoints (issue 19): [t, x, y] per path node, t [s] in the team's clock (the
+    // robot's delay plus its travel time to the node), x, y [m] in frame "map".
+    nlohmann::json waypoints = nlohmann::json::array();
+    for (std::size_t k = 0; k < a.path.nodes().size(); ++k) {
+      const Vec2 p = a.path.nodes()[k];
+      waypoints.push_back({s.delays[i] + a.path.time_at_arc(a.path.cumulative()[k]), p.x, p.y});
+    }
+    j["waypoints"] = waypoints;
     agents.push_back(j);
   }
   return {{"format", "voronav-schedule"},
           {"version", 1},
+          {"frame_id", "map"},
+          {"units", {{"time", "s"}, {"length", "m"}, {"speed", "m/s"}}},
           {"at_start", to_string(s.at_start)},
           {"at_goal", to_string(s.at_goal)},
           {"makespan", makespan},
