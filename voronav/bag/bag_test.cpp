@@ -5,9 +5,12 @@
 #include <lz4frame.h>
 #include <zstd.h>
 
+#include <unistd.h>
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <numbers>
+#include <set>
 
 #include "voronav/bag/cdr.hpp"
 #include "voronav/bag/crc32.hpp"
@@ -335,6 +338,16 @@ TEST(Cdr, AlignmentCountsFromAfterTheHeader) {
   double w = 0;
   std::memcpy(&w, b.data() + 4 + 24 + 48, 8);
   EXPECT_EQ(w, 1.0);  // identity rotation
+}
+
+TEST(Ros2Time, FromSeconds) {
+  EXPECT_EQ(ros::Time::from_seconds(1.25).sec, 1);
+  EXPECT_EQ(ros::Time::from_seconds(1.25).nanosec, 250000000U);
+  EXPECT_EQ(ros::Time::from_seconds(-3.0).sec, 0);  // clamped
+  EXPECT_EQ(ros::Time::from_seconds(1e12).sec, 2147483647);
+  const auto q = ros::Quaternion::from_yaw(std::numbers::pi / 2);
+  EXPECT_NEAR(q.z, std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(q.w, std::sqrt(0.5), 1e-15);
 }
 
 TEST(Cdr, OccupancyGridFields) {

@@ -21,6 +21,8 @@ void RosBagWriter::add(const std::string& topic, std::string_view type, double t
   auto [it, fresh] = topic_types_.emplace(topic, std::string(type));
   if (!fresh && it->second != type)
     throw Error("bag: topic " + topic + " carries " + it->second + ", not " + std::string(type));
+  if (t_s > 1.8e10)
+    throw Error("bag: topic " + topic + ": time " + std::to_string(t_s) + " s is out of range");
   const auto ns = static_cast<std::uint64_t>(std::llround(std::max(0.0, t_s) * 1e9));
   pending_.push_back({ns, topic, std::string(type), std::move(data)});
   ++counts_[topic];

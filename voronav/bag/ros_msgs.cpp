@@ -130,6 +130,7 @@ void put(CdrWriter& w, const Marker& m) {
 
 Time Time::from_seconds(double s) {
   if (!(s > 0.0)) return {};
+  if (s >= 2147483647.0) return {2147483647, 999999999};  // the largest Time
   const auto ns = static_cast<std::int64_t>(std::llround(s * 1e9));
   return {static_cast<std::int32_t>(ns / 1000000000), static_cast<std::uint32_t>(ns % 1000000000)};
 }
