@@ -5,12 +5,14 @@
 set -euo pipefail
 pkgs=(cmake ninja-build g++ pkg-config python3 libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
       libfmt-dev libspdlog-dev libboost-dev libcairo2-dev libpng-dev libtbb-dev
-      libgtest-dev libgmock-dev libbenchmark-dev cyclonedds-dev cyclonedds-tools
+      libgtest-dev libgmock-dev libbenchmark-dev cyclonedds-dev cyclonedds-tools libzstd-dev
+      liblz4-dev
       # The Python package (python/, docs/python.md) and its tests and examples.
       pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest python3-matplotlib)
 for arg in "$@"; do
   case "$arg" in
-    # The browser test of the replay page: Debian's Chromium, driven by Playwright from npm.
+    # The browser test of the replay page (Debian's Chromium, driven by Playwright from npm) and
+    # the MCAP test (node + npm packages pinned in tests/mcap/package-lock.json).
     --tests) pkgs+=(chromium)
              command -v npm >/dev/null || pkgs+=(nodejs npm) ;;
     # libFuzzer for Debian's clang 14 is in libclang-rt-14-dev (libclang_rt.fuzzer-x86_64.a).

@@ -192,8 +192,14 @@ def case_error_malformed_map():
 def case_demo():
     with tempfile.TemporaryDirectory() as d:
         out = os.path.join(d, "demo")
-        p = run("demo", "--out", out)
+        p = run("demo", "--out", out, "--mcap")
         check(os.path.abspath(out) in p.stdout, "demo must print its output folder")
+        # --mcap: each stage as a ROS 2 bag (read back fully by tests/mcap, docs/ros.md)
+        for bag in ("plan", "topology", "coordination", "netsim", "explore"):
+            with open(os.path.join(out, bag + ".mcap"), "rb") as f:
+                data = f.read()
+            check(data[:8] == b"\x89MCAP0\r\n" and data[-8:] == data[:8] and len(data) > 1000,
+                  bag + ".mcap must be a complete MCAP file")
         summary = json.load(open(os.path.join(out, "summary.json")))
         plan = summary["plan"]
         check(plan["astar"]["status"] == "ok", str(plan))
@@ -214,6 +220,8 @@ def case_demo():
         check(dds["ok"] and dds["same_as_in_process"], f"the DDS run equals the in-process one: {dds}")
         check(summary["exploration"]["collisions"] == 0, str(summary["exploration"]))
         check(summary["exploration"]["coverage_pct"] > 20, str(summary["exploration"]))
+        check(abs(summary["exploration"]["coverage"] * 100 - summary["exploration"]["coverage_pct"])
+              < 1e-9, "coverage is the fraction of coverage_pct")
         check(summary["movingai"]["mismatches"] == 0 and summary["movingai"]["unsolved"] == 0,
               str(summary["movingai"]))
         for name in ("1_occupancy_map.png", "3_plan_astar.png", "3_plan_ras.png",

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -172,8 +173,22 @@ Cell MapContext::to_cell(Vec2 p, const std::string& option) const {
   }
   if (!c || !g.contains(*c)) {
     std::ostringstream os;
-    os << "point (" << p.x << ", " << p.y << ") " << frame_name() << " is outside the " << g.width
-       << "x" << g.height << " map";
+    os << "point (" << p.x << ", " << p.y << ") " << frame_name() << " is outside the ";
+    if (cell_coordinates) {
+      os << g.width << "x" << g.height << " cell map";
+    } else {  // in the unit the user gave: the map's extent in metres
+      double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+      for (const Vec2 corner :
+           {Vec2{0, 0}, Vec2{static_cast<double>(g.width), 0},
+            Vec2{0, static_cast<double>(g.height)},
+            Vec2{static_cast<double>(g.width), static_cast<double>(g.height)}}) {
+        const Vec2 w = g.grid_to_world(corner);
+        x0 = std::min(x0, w.x), x1 = std::max(x1, w.x), y0 = std::min(y0, w.y),
+        y1 = std::max(y1, w.y);
+      }
+      os << "map, which spans x " << x0 << " .. " << x1 << " m, y " << y0 << " .. " << y1 << " m ("
+         << g.width << "x" << g.height << " cells of " << g.resolution << " m)";
+    }
     throw Error(option, 0, os.str());
   }
   return *c;
@@ -185,6 +200,16 @@ nlohmann::json MapContext::cell_json(Cell c) const {
     return {x, y};
   }
   return {c.x, c.y};
+}
+
+const char* MapContext::cell_frame() const {
+  return map.format == io::MapFormat::kMovingAi ? "movingai_y_down" : "grid_y_up";
+}
+
+nlohmann::json pose_json(const Pose2& p, bool with_frame) {
+  nlohmann::json j{{"x", p.position.x}, {"y", p.position.y}, {"yaw", p.yaw}};
+  if (with_frame) j["frame_id"] = "map";
+  return j;
 }
 
 std::string MapContext::frame_name() const {

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "voronav/core/pose2.hpp"
 #include "voronav/core/vec2.hpp"
 #include "voronav/io/map_loader.hpp"
 
@@ -49,7 +50,13 @@ struct MapContext {
   /// The user-facing cell coordinates of a grid cell (flipped back for .map files).
   [[nodiscard]] nlohmann::json cell_json(Cell c) const;
   [[nodiscard]] std::string frame_name() const;
+  /// The convention of cell coordinates in JSON: "movingai_y_down" for .map files (x right,
+  /// y down, as in .scen), "grid_y_up" otherwise (row 0 at the bottom, as nav_msgs/OccupancyGrid).
+  [[nodiscard]] const char* cell_frame() const;
 };
+
+/// A pose as JSON: {"x", "y" [m], "yaw" [rad], "frame_id": "map"} (REP-103).
+[[nodiscard]] nlohmann::json pose_json(const Pose2& p, bool with_frame = true);
 
 /// Loads any supported map; `force_cells` makes ROS/image maps take cell coordinates too.
 [[nodiscard]] MapContext load_map_context(const std::filesystem::path& path, bool force_cells);

@@ -12,6 +12,7 @@
 #include "cli_common.hpp"
 #include "command.hpp"
 #include "recordings.hpp"
+#include "voronav/bag/command_bags.hpp"
 #include "voronav/coordination/coordinator.hpp"
 #include "voronav/coordination/prioritized.hpp"
 #include "voronav/coordination/scenario.hpp"
@@ -41,6 +42,7 @@ struct CoordArgs {
   double node_spacing = -1.0;
   bool no_reduction = false;
   bool json = false;
+  std::filesystem::path mcap;
 };
 
 void draw_trajectories(const co::Scenario& sc, const std::vector<co::Agent>& agents,
@@ -281,6 +283,27 @@ void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::
   if (!r.valid) exit_code() = 1;
 }
 
+/// Heading [rad] of the first (start) or last (goal) path segment of non-zero length; 0 if none.
+double heading(const co::Agent& agent, bool at_start) {
+  const auto& n = agent.path.nodes();
+  for (std::size_t k = 1; k < n.size(); ++k) {
+    const std::size_t i = at_start ? k : n.size() - k;
+    const Vec2 d = n[i] - n[i - 1];
+    if (d.norm() > 1e-12) return std::atan2(d.y, d.x);
+  }
+  return 0.0;
+}
+
+/// [t, x, y] per path node: t [s] = delay + travel time to the node, x, y [m] in frame "map".
+nlohmann::json waypoints(const co::Agent& agent, double delay) {
+  nlohmann::json w = nlohmann::json::array();
+  const auto& nodes = agent.path.nodes();
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    w.push_back(
+        {delay + agent.path.time_at_arc(agent.path.cumulative()[k]), nodes[k].x, nodes[k].y});
+  return w;
+}
+
 void run(const CoordArgs& a) {
   co::Scenario sc;
   if (!a.scenario.empty()) {
@@ -312,10 +335,16 @@ void run(const CoordArgs& a) {
   const bool ok = r.status == co::ResolveStatus::kOk;
   nlohmann::json js_agents = nlohmann::json::array();
   for (std::size_t i = 0; i < agents.size(); ++i) {
-    js_agents.push_back({{"id", agents[i].id},
-                         {"delay", r.delays[i]},
-                         {"arrival", ok ? nlohmann::json(r.arrivals[i]) : nlohmann::json(nullptr)},
-                         {"travel", agents[i].path.travel_time()}});
+    js_agents.push_back(
+        {{"id", agents[i].id},
+         {"delay", r.delays[i]},
+         {"arrival", ok ? nlohmann::json(r.arrivals[i]) : nlohmann::json(nullptr)},
+         {"travel", agents[i].path.travel_time()},
+         // issue 19: poses in frame "map" and timed waypoints [t s, x m, y m]
+         {"start", pose_json({agents[i].path.nodes().front(), heading(agents[i], true)})},
+         {"goal", pose_json({agents[i].path.nodes().back(), heading(agents[i], false)})},
+         {"path_length_m", agents[i].path.length()},
+         {"waypoints", waypoints(agents[i], r.delays[i])}});
   }
   nlohmann::json order = nlohmann::json::array();
   for (const int i : r.order)
@@ -344,7 +373,9 @@ void run(const CoordArgs& a) {
       {"evaluations", r.search.evaluations},
       {"at_start", co::to_string(opt.map.at_start)},
       {"at_goal", co::to_string(opt.map.at_goal)},
-      {"agents", js_agents}};
+      {"agents", js_agents},
+      {"frame_id", "map"},
+      {"units", {{"time", "s"}, {"length", "m"}}}};
   if (!a.out.empty()) {
     std::filesystem::create_directories(a.out);
     write_schedules(
@@ -359,6 +390,9 @@ void run(const CoordArgs& a) {
                                   (a.out / "index.html").string());
     }
   }
+  if (!a.mcap.empty())
+    bag::write_coordination_bag(a.mcap, sc.map ? sc.map->grid : OccupancyGrid{}, agents, r,
+                                opt.map);
   if (a.json) {
     print_json(out);
   } else {
@@ -420,6 +454,9 @@ void setup(CLI::App& app) {
   cmd->add_flag("--json", a->json, "JSON output");
   cmd->add_option("--out", a->out, "folder for schedule.json/.yaml and pictures")
       ->check(output_dir());
+  cmd->add_option("--mcap", a->mcap,
+                  "Write a ROS 2 bag (MCAP): /map, /robot_N/plan, /tf, /robots, /collision_boxes, "
+                  "/events (docs/ros.md)");
   cmd->callback([a] { run(*a); });
 }
 

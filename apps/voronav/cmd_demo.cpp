@@ -22,6 +22,7 @@
 #include "plan_ras.hpp"
 #include "recordings.hpp"
 #include "topo_pictures.hpp"
+#include "voronav/bag/command_bags.hpp"
 #include "voronav/coordination/coordinator.hpp"
 #include "voronav/coordination/scenario.hpp"
 #include "voronav/dds/netsim_dds.hpp"
@@ -53,6 +54,7 @@ struct DemoArgs {
   int robots = 5;
   std::uint64_t seed = 1;
   bool json = false;
+  bool mcap = false;  ///< also write each stage as a ROS 2 bag (*.mcap)
 };
 
 /// Stage progress on stderr, only on a terminal and without --json (quiet in CI and pipes).
@@ -151,6 +153,7 @@ struct Demo {
     topo = topology::build_topological_map(built_blocked);
     const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     save_stages(built_map, built_blocked, topo, true, args.out / "2_topology");
+    if (args.mcap) bag::write_topology_bag(args.out / "topology.mcap", built_map, topo);
     std::size_t diagram_cells = 0;
     for (auto v : topo.diagram.data())
       diagram_cells += v != 0;
@@ -195,6 +198,10 @@ struct Demo {
       if (name == "astar" && r.ok())
         for (Cell c : r.path)
           astar_path.push_back(built_map.geometry().cell_center(c));
+      if (name == "astar" && args.mcap)
+        bag::write_plan_bag(args.out / "plan.mcap", built_map,
+                            built_map.geometry().cell_center(start),
+                            built_map.geometry().cell_center(goal), astar_path, name);
     }
     // RAS (seed 001) on the raw map: region size and density from the robot's size, so the
     // density rule, not an inflated grid, keeps the robot off the walls.
@@ -259,6 +266,9 @@ struct Demo {
     co::CoordinateOptions opt;
     opt.search.ga.seed = args.seed;
     const co::CoordinationResult r = co::coordinate(planned.agents, opt);
+    if (args.mcap)
+      bag::write_coordination_bag(args.out / "coordination.mcap", built_map, planned.agents, r,
+                                  opt.map);
     nlohmann::json agents = nlohmann::json::array();
     for (std::size_t i = 0; i < planned.agents.size(); ++i)
       agents.push_back({{"id", planned.agents[i].id},
@@ -349,6 +359,8 @@ struct Demo {
     const auto& m = res.metrics;
     report::write_replay_html(netsim_recording(sc, res, o.radio.range_m),
                               (args.out / "netsim.html").string());
+    if (args.mcap)
+      bag::write_run_bag(netsim_recording(sc, res, o.radio.range_m), args.out / "netsim.mcap");
     summary["networked"] = {{"robots", team},
                             {"method", "decentralized"},
                             {"success", m.success},
@@ -395,10 +407,18 @@ struct Demo {
     o.seed = args.seed;
     const auto r = exploration::run_exploration(truth_map, o);
     report::write_replay_html(exploration_recording(r), (args.out / "explore.html").string());
+    if (args.mcap) {
+      report::Recording rec = exploration_recording(r);
+      rec.map = exploration::resample_world(truth_map, o.min_cell_size);
+      bag::BagExtras extras;
+      extras.known_maps.emplace_back(r.sim_time_s, r.recording.team_map);
+      bag::write_run_bag(rec, args.out / "explore.mcap", extras);
+    }
     summary["exploration"] = {
         {"method", "tree"},
         {"robots", o.robots},
         {"coverage_pct", 100.0 * r.coverage},
+        {"coverage", r.coverage},  // a fraction, as in exploration.json (issue 19)
         {"t90_s", r.t90_s ? nlohmann::json(*r.t90_s) : nlohmann::json(nullptr)},
         {"distance_m", r.distance_m},
         {"collisions", r.collisions},
@@ -531,6 +551,10 @@ void setup(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "Seed of the sweep poses and the team")
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print summary.json to stdout");
+  cmd->add_flag(
+      "--mcap", args->mcap,
+      "Also write each stage as a ROS 2 bag: plan.mcap, topology.mcap, coordination.mcap, "
+      "netsim.mcap, explore.mcap (docs/ros.md)");
   cmd->callback([args] { run(*args); });
 }
 

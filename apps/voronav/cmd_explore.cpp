@@ -9,6 +9,7 @@
 #include "cli_common.hpp"
 #include "command.hpp"
 #include "recordings.hpp"
+#include "voronav/bag/run_bag.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/exploration/explorer.hpp"
 #include "voronav/render/figure.hpp"
@@ -29,6 +30,7 @@ struct ExploreArgs {
   double stop_at = 1.01;
   int picture_px = 900;
   bool json = false;
+  std::filesystem::path mcap;
 };
 
 render::Color robot_color(std::size_t i) {
@@ -118,6 +120,14 @@ void run(const ExploreArgs& a) {
     save_pictures(exploration::resample_world(world, o.min_cell_size), r, a.out, a.picture_px);
     report::write_replay_html(exploration_recording(r), (a.out / "index.html").string());
   }
+  if (!a.mcap.empty()) {
+    // /map: the ground truth explored; /known_map: the team's merged map at the end.
+    report::Recording rec = exploration_recording(r);
+    rec.map = exploration::resample_world(world, o.min_cell_size);
+    bag::BagExtras extras;
+    extras.known_maps.emplace_back(r.sim_time_s, r.recording.team_map);
+    bag::write_run_bag(rec, a.mcap, extras);
+  }
   if (a.json) {
     print_json(nlohmann::json::parse(exploration::to_json(r, false)));
   } else {
@@ -167,6 +177,9 @@ void setup(CLI::App& app) {
   cmd->add_option("--out", args->out,
                   "Folder for exploration.json (with the recording), explore.png and tree.png")
       ->check(output_dir());
+  cmd->add_option("--mcap", args->mcap,
+                  "Write a ROS 2 bag (MCAP): /map, /known_map, /tf, /robots, /voronoi, "
+                  "/robot_N/plan (docs/ros.md)");
   cmd->add_option("--picture-px", args->picture_px, "Larger side of the pictures [px]")
       ->check(CLI::Range(100, 4000))
       ->capture_default_str();

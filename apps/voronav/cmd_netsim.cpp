@@ -16,6 +16,7 @@
 #include "cli_common.hpp"
 #include "command.hpp"
 #include "recordings.hpp"
+#include "voronav/bag/run_bag.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/dds/netsim_dds.hpp"
 #include "voronav/render/plot.hpp"
@@ -42,6 +43,7 @@ struct NetsimArgs {
   long world_restart_at_step = -1;
   double dds_timeout_s = 900.0;
   bool json = false;
+  std::string mcap;
   // Whether the option was given on the command line (it then overrides a scenario file).
   bool method_given = false, seed_given = false, loss_given = false, runs_given = false;
 };
@@ -303,6 +305,15 @@ void run(const NetsimArgs& a) {
     report::write_replay_html(netsim_recording(sc, sim::run_netsim(sc, o), o.radio.range_m),
                               (std::filesystem::path(a.out) / "index.html").string());
   }
+  if (!a.mcap.empty()) {
+    // Run 2 (or 1) of the last method in process with recording on (with --transport dds too:
+    // the processes give the same figures, docs/ros.md).
+    const auto sc = plan.scenario(std::min(plan.runs, 2));
+    sim::NetSimOptions o = plan.options;
+    o.method = methods.back();
+    o.record = true;
+    bag::write_run_bag(netsim_recording(sc, sim::run_netsim(sc, o), o.radio.range_m), a.mcap);
+  }
   if (!a.plots.empty()) save_plots(a.plots, plan.label, plan.title, by_method);
   if (a.json) {
     std::cout << out.dump(2) << "\n";
@@ -349,6 +360,10 @@ void setup(CLI::App& app) {
                 "--method (decentralized for both) and exit")
       ->check(output_file());
   c->add_option("--out", args->out, "directory for per-run JSON")->check(output_dir());
+  c->add_option(
+      "--mcap", args->mcap,
+      "Write one run as a ROS 2 bag (MCAP): /map, /plan, /tf, /robots, /messages, /events "
+      "(docs/ros.md)");
   c->add_option("--plots", args->plots, "directory for per-run bar charts (PNG)")
       ->check(output_dir());
   c->add_flag("--json", args->json, "machine-readable output");

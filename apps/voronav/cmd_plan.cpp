@@ -1,5 +1,6 @@
 // voronav plan: one start-goal query on a map with a grid planner; text or JSON out, optional
 // PNG/SVG picture.
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
@@ -7,6 +8,7 @@
 #include "command.hpp"
 #include "plan_picture.hpp"
 #include "plan_ras.hpp"
+#include "voronav/bag/command_bags.hpp"
 #include "voronav/planning/failure_hint.hpp"
 #include "voronav/planning/planner_factory.hpp"
 #include "voronav/topology/topo_planner.hpp"
@@ -25,12 +27,14 @@ struct PlanArgs {
   std::filesystem::path png, svg;
   bool json = false;
   RasCliArgs ras;
+  std::filesystem::path mcap;
 };
 
 void run(const PlanArgs& a) {
   const MapContext ctx = load_map_context(a.map, a.cells);
-  const Cell start = ctx.to_cell(parse_point(a.start, "--start"), "--start");
-  const Cell goal = ctx.to_cell(parse_point(a.goal, "--goal"), "--goal");
+  const Vec2 start_in = parse_point(a.start, "--start"), goal_in = parse_point(a.goal, "--goal");
+  const Cell start = ctx.to_cell(start_in, "--start");
+  const Cell goal = ctx.to_cell(goal_in, "--goal");
   planning::PlannerOptions opt;
   opt.connectivity = a.connectivity == 4 ? planning::Connectivity::k4 : planning::Connectivity::k8;
   opt.robot_radius = a.radius;
@@ -65,13 +69,31 @@ void run(const PlanArgs& a) {
       }
     }
   }
+  if (!a.mcap.empty()) {
+    std::vector<Vec2> world;
+    for (Cell c : r.path)
+      world.push_back(ctx.map.grid.geometry().cell_center(c));
+    const auto& geo = ctx.map.grid.geometry();
+    bag::write_plan_bag(a.mcap, ctx.map.grid, geo.cell_center(start), geo.cell_center(goal), world,
+                        std::string(planner->name()));
+  }
   if (a.json) {
     nlohmann::json path = nlohmann::json::array(), world = nlohmann::json::array();
-    for (Cell c : r.path) {
-      path.push_back(ctx.cell_json(c));
-      const Vec2 w = ctx.map.grid.geometry().cell_center(c);
+    nlohmann::json poses = nlohmann::json::array();
+    const auto& geo = ctx.map.grid.geometry();
+    double yaw = 0.0;  // heading of the next segment (the last pose keeps the previous one)
+    for (std::size_t i = 0; i < r.path.size(); ++i) {
+      path.push_back(ctx.cell_json(r.path[i]));
+      const Vec2 w = geo.cell_center(r.path[i]);
       world.push_back({w.x, w.y});
+      if (i + 1 < r.path.size()) {
+        const Vec2 d = geo.cell_center(r.path[i + 1]) - w;
+        yaw = std::atan2(d.y, d.x);
+      }
+      poses.push_back(pose_json({w, yaw}, false));
     }
+    const double start_yaw = poses.empty() ? 0.0 : poses.front()["yaw"].get<double>();
+    const double goal_yaw = poses.empty() ? 0.0 : poses.back()["yaw"].get<double>();
     nlohmann::json out{{"status", planning::to_string(r.status)},
                        {"planner", planner->name()},
                        {"length", r.length_cells * res},
@@ -81,7 +103,23 @@ void run(const PlanArgs& a) {
                        {"time_ms", r.time_ms},
                        {"preprocess_ms", r.preprocess_ms},
                        {"path", path},
-                       {"path_world", world}};
+                       {"path_world", world},
+                       // issue 19: frames, units and inputs named (docs/ros.md)
+                       {"frame_id", "map"},
+                       {"cell_frame", ctx.cell_frame()},
+                       {"length_m", r.length_cells * res},
+                       {"length_cells", r.length_cells},
+                       {"start", pose_json({geo.cell_center(start), start_yaw})},
+                       {"goal", pose_json({geo.cell_center(goal), goal_yaw})},
+                       {"poses", poses},
+                       {"input",
+                        {{"map", a.map.string()},
+                         {"start", {start_in.x, start_in.y}},
+                         {"goal", {goal_in.x, goal_in.y}},
+                         {"units", ctx.cell_coordinates ? "cells" : "m"},
+                         {"cell_frame", ctx.cell_frame()},
+                         {"radius_m", a.radius},
+                         {"connectivity", a.connectivity}}}};
     if (ras != nullptr) add_ras_json(out, *ras, ctx);
     if (!hint.text.empty()) out["hint"] = hint.text;
     print_json(out);
@@ -127,8 +165,11 @@ void setup(CLI::App& app) {
   cmd->add_option("--svg", args->svg, "Write an SVG picture of the map and path");
   cmd->add_flag("--json", args->json,
                 "JSON output: status, length [m], cells (length in cells), expanded, time_ms, "
-                "path (cells), path_world (m)");
+                "path (cells), path_world (m), frame_id, cell_frame, length_m, start/goal/poses "
+                "{x, y, yaw}, input (docs/ros.md)");
   add_ras_options(cmd, args->ras);
+  cmd->add_option("--mcap", args->mcap,
+                  "Write the run as a ROS 2 bag (MCAP): /map, /plan, /tf, /robots (docs/ros.md)");
   cmd->callback([args] { run(*args); });
 }
 

@@ -11,6 +11,7 @@
 #include "cli_common.hpp"
 #include "command.hpp"
 #include "topo_pictures.hpp"
+#include "voronav/bag/command_bags.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/io/map_loader.hpp"
 #include "voronav/render/figure.hpp"
@@ -29,6 +30,7 @@ struct TopoArgs {
   int free_from = 250;
   double min_region_area = 1.0;
   bool json = false;
+  std::filesystem::path mcap;
 };
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
@@ -55,6 +57,7 @@ void run(const TopoArgs& a) {
   const double build_ms = ms_since(t0);
   const double cpu_ms = 1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
   const GridGeometry& geo = m.geometry;
+  if (!a.mcap.empty()) bag::write_topology_bag(a.mcap, loaded.grid, m);
 
   nlohmann::json j;
   j["map"] = a.map.string();
@@ -62,6 +65,10 @@ void run(const TopoArgs& a) {
   j["width"] = geo.width;
   j["height"] = geo.height;
   j["resolution"] = geo.resolution;
+  j["frame_id"] = "map";
+  j["cell_frame"] = "grid_y_up";  // "cell" fields: grid cells, row 0 at the bottom
+  j["origin"] = pose_json(geo.origin);
+  j["resolution_unit"] = "m/cell";
   j["time_ms"] = build_ms;
   j["cpu_ms"] = cpu_ms;
   std::size_t diagram_cells = 0;
@@ -185,6 +192,8 @@ void setup(CLI::App& app) {
                   "Regions smaller than this [m^2] are merged into a neighbour")
       ->check(non_negative())
       ->capture_default_str();
+  cmd->add_option("--mcap", args->mcap,
+                  "Write a ROS 2 bag (MCAP): /map, /voronoi, /topology (docs/ros.md)");
   cmd->add_flag("--json", args->json,
                 "JSON output: critical_points, regions (count), graph {nodes, edges}, time_ms, "
                 "segmentation");

@@ -51,15 +51,28 @@ nlohmann::json to_json(const Schedule& s) {
     j["a_max"] = std::isinf(a.path.limits().a_max) ? nlohmann::json(nullptr)
                                                    : nlohmann::json(a.path.limits().a_max);
     if (timed) {
+      // SIPP: the motion itself, constant velocity between these [t, x, y].
       nlohmann::json w = nlohmann::json::array();
       for (const TimedWaypoint& p : s.waypoints[i])
         w.push_back({p.t, p.p.x, p.p.y});
       j["waypoints"] = w;
+    } else {
+      // Start delays (issue 19): [t, x, y] per path node, t [s] in the team's clock (the
+      // robot's delay plus its travel time to the node), x, y [m] in frame "map"; between nodes
+      // the robot follows its speed profile (v_max, a_max), so these are not read back.
+      nlohmann::json w = nlohmann::json::array();
+      for (std::size_t k = 0; k < a.path.nodes().size(); ++k) {
+        const Vec2 p = a.path.nodes()[k];
+        w.push_back({s.delays[i] + a.path.time_at_arc(a.path.cumulative()[k]), p.x, p.y});
+      }
+      j["timed_path"] = w;
     }
     agents.push_back(j);
   }
   nlohmann::json out = {{"format", "voronav-schedule"},
                         {"version", 1},
+                        {"frame_id", "map"},
+                        {"units", {{"time", "s"}, {"length", "m"}, {"speed", "m/s"}}},
                         {"at_start", to_string(s.at_start)},
                         {"at_goal", to_string(s.at_goal)},
                         {"makespan", makespan},

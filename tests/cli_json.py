@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""Frames and units in the JSON outputs (issue 19, docs/ros.md): every pose {x, y, yaw} in metres
+and radians with frame_id "map", cells with their convention named (cell_frame), the inputs
+echoed, lengths as *_m, coverage as a fraction, timed waypoints [t, x, y] in schedules, and
+out-of-map errors in the unit the user gave.
+Usage: cli_json.py VORONAV_BINARY REPO_ROOT CASE."""
+import json
+import math
+import os
+import sys
+import tempfile
+
+from cli_util import check, runner
+
+BIN, ROOT, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
+DATA = os.path.join(ROOT, "data")
+TB3 = os.path.join(DATA, "ros_maps", "turtlebot3_world", "map.yaml")
+ARENA = os.path.join(DATA, "movingai", "arena.map")
+run = runner(BIN, timeout=120)
+
+
+def is_pose(p, frame=True):
+    keys = {"x", "y", "yaw"} | ({"frame_id"} if frame else set())
+    return (isinstance(p, dict) and set(p) == keys and all(math.isfinite(p[k]) for k in "xy")
+            and -math.pi <= p["yaw"] <= math.pi and (not frame or p["frame_id"] == "map"))
+
+
+def near(a, b, tol=1e-9):
+    return abs(a - b) <= tol
+
+
+def case_plan_ros():
+    j = json.loads(run("plan", "--map", TB3, "--start", "-1.9,-0.5", "--goal", "1.9,0.5",
+                       "--radius", "0.1", "--json").stdout)
+    check(j["frame_id"] == "map" and j["cell_frame"] == "grid_y_up", str(j)[:300])
+    check(j["input"] == {"map": TB3, "start": [-1.9, -0.5], "goal": [1.9, 0.5], "units": "m",
+                         "cell_frame": "grid_y_up", "radius_m": 0.1, "connectivity": 8},
+          str(j["input"]))
+    check(is_pose(j["start"]) and is_pose(j["goal"]), f"{j['start']} {j['goal']}")
+    # The start/goal poses are the centres of the cells holding the given points (0.05 m cells).
+    check(near(j["start"]["x"], -1.9, 0.0251) and near(j["start"]["y"], -0.5, 0.0251), str(j["start"]))
+    check(near(j["goal"]["x"], 1.9, 0.0251) and near(j["goal"]["y"], 0.5, 0.0251), str(j["goal"]))
+    check(near(j["length_m"], j["length"]) and near(j["length_m"], j["length_cells"] * 0.05),
+          "length_m must be length_cells * resolution")
+    poses = j["poses"]
+    check(len(poses) == len(j["path_world"]) and all(is_pose(p, False) for p in poses), "poses")
+    for a, b in zip(poses, poses[1:]):  # yaw points along the path
+        check(near(a["yaw"], math.atan2(b["y"] - a["y"], b["x"] - a["x"])), f"yaw {a} -> {b}")
+    check([poses[0]["x"], poses[0]["y"]] == j["path_world"][0], "poses[0] != path_world[0]")
+
+
+def case_plan_movingai():
+    j = json.loads(run("plan", "--map", ARENA, "--start", "3,3", "--goal", "40,40",
+                       "--json").stdout)
+    check(j["cell_frame"] == "movingai_y_down" and j["input"]["units"] == "cells", str(j)[:300])
+    check(j["path"][0] == [3, 3] and j["path"][-1] == [40, 40], "path in the user's cells")
+    # Cell (3, 3), y down, on the 49-row arena is the world point (3.5, 45.5).
+    check(near(j["start"]["x"], 3.5) and near(j["start"]["y"], 45.5), str(j["start"]))
+    check(near(j["goal"]["x"], 40.5) and near(j["goal"]["y"], 8.5), str(j["goal"]))
+
+
+def case_errors_in_user_units():
+    p = run("plan", "--map", TB3, "--start", "30,0", "--goal", "1,1", expect=2)
+    check("m" in p.stderr and "-10 .. 9.2 m" in p.stderr, p.stderr)
+    p = run("plan", "--map", ARENA, "--start", "60,3", "--goal", "1,1", expect=2)
+    check("49x49 cell map" in p.stderr, p.stderr)
+
+
+def case_topo():
+    j = json.loads(run("topo", "--map", TB3, "--json").stdout)
+    check(j["frame_id"] == "map" and j["cell_frame"] == "grid_y_up", str(j)[:300])
+    check(is_pose(j["origin"]) and near(j["origin"]["x"], -10) and near(j["origin"]["y"], -10),
+          str(j["origin"]))
+    check(j["resolution_unit"] == "m/cell" and near(j["resolution"], 0.05), "resolution")
+    cp = j["critical_points"][0]
+    x = -10 + (cp["cell"][0] + 0.5) * 0.05
+    check(near(cp["world"][0], x), f"critical point world/cell frames disagree: {cp}")
+
+
+def case_coordinate():
+    with tempfile.TemporaryDirectory() as out:
+        j = json.loads(run("coordinate", "--scenario",
+                           os.path.join(DATA, "coordination", "arena_four.yaml"), "--search",
+                           "exhaustive", "--json", "--out", out).stdout)
+        check(j["frame_id"] == "map" and j["units"] == {"time": "s", "length": "m"}, str(j)[:200])
+        for a in j["agents"]:
+            check(is_pose(a["start"]) and is_pose(a["goal"]), str(a)[:200])
+            w = a["waypoints"]
+            check(near(w[0][0], a["delay"]) and near(w[-1][0], a["arrival"], 1e-6),
+                  f"robot {a['id']}: waypoints must run from its delay to its arrival: {w}")
+            check(all(p[0] <= q[0] for p, q in zip(w, w[1:])), "waypoint times decrease")
+            check([w[0][1], w[0][2]] == [a["start"]["x"], a["start"]["y"]], "first waypoint")
+        # Robot 1 starts at cell (3, 5) (y down) of the 49-row arena: (3.5, 43.5) m.
+        r1 = next(a for a in j["agents"] if a["id"] == 1)
+        check(near(r1["start"]["x"], 3.5) and near(r1["start"]["y"], 43.5), str(r1["start"]))
+        with open(os.path.join(out, "schedule.json")) as f:
+            s = json.load(f)
+        check(s["frame_id"] == "map" and s["units"]["time"] == "s", str(s)[:200])
+        for sa, ja in zip(s["agents"], j["agents"]):
+            check(sa["waypoints"] == ja["waypoints"], "schedule.json waypoints differ from --json")
+        # The schedule with its new fields still validates.
+        run("validate-schedule", os.path.join(out, "schedule.yaml"))
+
+
+def case_explore():
+    with tempfile.TemporaryDirectory() as out:
+        j = json.loads(run("explore", "--world", "paper", "--robots", "2", "--time", "30",
+                           "--json", "--out", out).stdout)
+        check(0.0 <= j["coverage"] <= 1.0, "coverage must be a fraction")
+        with open(os.path.join(out, "exploration.json")) as f:
+            check(0.0 <= json.load(f)["coverage"] <= 1.0, "exploration.json coverage")
+
+
+CASES = {name[5:]: f for name, f in globals().items() if name.startswith("case_")}
+if CASE not in CASES:
+    sys.exit(f"unknown case {CASE}; known: {', '.join(CASES)}")
+CASES[CASE]()
+print("ok", CASE)
