@@ -7,7 +7,6 @@
 #include <limits>
 #include <memory>
 #include <random>
-#include <cstdlib>
 #include <sstream>
 
 #include "voronav/core/error.hpp"
@@ -38,9 +37,9 @@ struct Agent {
   std::size_t next = 0;
   double blocked_time = 0.0;
   double since_progress = 0.0;
-  double reactive_until = 0.0;  // [s] a deadlocked robot searches reactively until then
-  std::optional<Vec2> goal;     // frontier goal
-  std::vector<Vec2> blacklist;  // unreachable frontier goals
+  double reactive_until = 0.0;         // [s] a deadlocked robot searches reactively until then
+  std::optional<Vec2> goal;            // frontier goal
+  std::vector<Vec2> blacklist;         // unreachable frontier goals
   bool on_tree = false;                // following a leg of a tree dispatch
   std::deque<std::vector<Vec2>> legs;  // tree legs still to drive, each ending at a leaf
   bool tree_done = false;              // its dispatched leaves are done (or given up)
@@ -48,9 +47,9 @@ struct Agent {
   double retry_at = 0.0;               // [s] TreeReplan::kFromRobots: next attempt
   Vec2 anchor;                         // stall watch: where it has stayed since anchor_t
   double anchor_t = 0.0;
-  Vec2 wd_anchor;                      // progress watchdog (give up a goal when stuck)
+  Vec2 wd_anchor;  // progress watchdog (give up a goal when stuck)
   double wd_t = 0.0;
-  double back_off_until = 0.0;         // [s] yields to a robot with a lower index until then
+  double back_off_until = 0.0;  // [s] yields to a robot with a lower index until then
   bool stalled = false;
 };
 
@@ -446,7 +445,6 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     VoronoiTree tree = build_voronoi_tree(vor, opt, centre, o.tree);
     ++result.trees;
     std::vector<int> leaves = tree.leaves_by_distance();
-    if (std::getenv("VDBG")) { std::fprintf(stderr, "t=%g feats=%zu verts=%zu nodes=%zu leaves=%zu\n", t, features.size(), vor.vertices.size(), tree.nodes.size(), leaves.size()); for (int l : leaves) std::fprintf(stderr, "  leaf %g %g gain %g\n", tree.nodes[l].position.x, tree.nodes[l].position.y, unknown_fraction(tg, tree.nodes[l].position)); }
     if (hybrid)
       std::erase_if(leaves, [&](int l) {
         return unknown_fraction(tg, tree.nodes[static_cast<std::size_t>(l)].position) <
@@ -480,7 +478,10 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         if (k == 0) {
           const Vec2 entry = tree.nodes[static_cast<std::size_t>(at)].position;
           leg = path_on(opt, pos, entry);
-          if (leg.empty()) leg = {pos, entry};
+          if (leg.size() < 2)
+            leg = {pos, entry};
+          else
+            leg.back() = entry;  // the path ends in the entry node's cell: end exactly on it
         } else {
           leg = {tree.nodes[static_cast<std::size_t>(at)].position};
         }
@@ -533,6 +534,10 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       const Vec2 root = tree.nodes[static_cast<std::size_t>(tree.root)].position;
       std::vector<Vec2> leg = path_on(opt, pos, root);
       if (leg.empty()) return;
+      if (leg.size() > 1)
+        leg.back() = root;
+      else
+        leg.push_back(root);
       const std::vector<Vec2> w = tree.waypoints(tree.root, leaf);
       leg.insert(leg.end(), w.begin() + 1, w.end());
       a.legs.assign(1, std::move(leg));
@@ -802,7 +807,6 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       } else if (!a.stalled && t - a.anchor_t > o.stall_time && last_coverage < 0.99) {
         a.stalled = true;
         ++result.stalled_robots;
-        if (std::getenv("VDBG")) std::fprintf(stderr, "STALL t=%g robot %zu at %g %g mode %d on_tree %d done %d front %d\n", t, i, now.x, now.y, int(a.mode), int(a.on_tree), int(a.tree_done), int(a.use_frontier));
       }
     }
     // Record.
@@ -854,10 +858,9 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"t99_s\":" << opt(r.t99_s) << ",\"sim_time_s\":" << num(r.sim_time_s)
      << ",\"distance_m\":" << num(r.distance_m) << ",\"collisions\":" << r.collisions
      << ",\"overlap\":" << num(r.overlap) << ",\"feature_points\":" << r.feature_points
-     << ",\"leaves\":" << r.leaves << ",\"trees\":" << r.trees
-     << ",\"dispatches\":" << r.dispatches << ",\"leaves_reached\":" << r.leaves_reached
-     << ",\"frontier_goals\":" << r.frontier_goals << ",\"stalled_robots\":" << r.stalled_robots
-     << ",\"watchdog_events\":" << r.watchdog_events
+     << ",\"leaves\":" << r.leaves << ",\"trees\":" << r.trees << ",\"dispatches\":" << r.dispatches
+     << ",\"leaves_reached\":" << r.leaves_reached << ",\"frontier_goals\":" << r.frontier_goals
+     << ",\"stalled_robots\":" << r.stalled_robots << ",\"watchdog_events\":" << r.watchdog_events
      << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;
   if (include_recording) {

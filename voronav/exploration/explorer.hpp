@@ -72,9 +72,9 @@ struct ExplorationOptions {
   /// while reachable unknown space remains (coverage < 0.99).
   double stall_time = 60.0;
   double stall_distance = 0.5;
-  double replan_period = 2.0;      ///< [s] frontier targets are re-assigned this often
-  double goal_tolerance = 0.3;     ///< [m] a waypoint or goal counts as reached
-  double clearance = 0.1;          ///< [m] added to the body radius when planning paths
+  double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
+  double goal_tolerance = 0.3;  ///< [m] a waypoint or goal counts as reached
+  double clearance = 0.1;       ///< [m] added to the body radius when planning paths
   /// [m] worlds with finer cells are resampled to cells of about this size (a coarse cell is
   /// occupied when any of its cells is); keeps 16-robot runs on 50 m maps fast.
   double min_cell_size = 0.1;
@@ -98,11 +98,11 @@ struct ExplorationFrame {
 struct TreeDispatch {
   double t = 0.0;  ///< [s]
   int robot = 0;
-  bool first = true;        ///< the single dispatch of the first tree (else a re-plan)
-  Vec2 from;                ///< the robot's position [m]
-  Vec2 root;                ///< the root of the tree it was sent along [m]
-  std::vector<Vec2> leaves; ///< its goals, in order [m]
-  std::vector<Vec2> route;  ///< waypoints to its first leaf [m]
+  bool first = true;         ///< the single dispatch of the first tree (else a re-plan)
+  Vec2 from;                 ///< the robot's position [m]
+  Vec2 root;                 ///< the root of the tree it was sent along [m]
+  std::vector<Vec2> leaves;  ///< its goals, in order [m]
+  std::vector<Vec2> route;   ///< waypoints to its first leaf [m]
 };
 
 struct ExplorationRecording {
@@ -132,8 +132,8 @@ struct ExplorationResult {
   int collisions = 0;           ///< refused steps (body would overlap a wall or a robot)
   double overlap = 0.0;         ///< sum of per-robot known cells / team known cells - 1
   int feature_points = 0;
-  int leaves = 0;  ///< leaves of the first tree (kTree)
-  int trees = 0;   ///< trees built (first dispatch and re-plans)
+  int leaves = 0;          ///< leaves of the first tree (kTree)
+  int trees = 0;           ///< trees built (first dispatch and re-plans)
   int dispatches = 0;      ///< robot dispatches along a tree (first + re-plans)
   int leaves_reached = 0;  ///< dispatched leaves a robot actually reached
   int frontier_goals = 0;  ///< frontier goals assigned (frontier methods, kTreeFrontier)
