@@ -154,7 +154,7 @@ report::Recording exploration_recording(const exploration::ExplorationResult& re
   const exploration::ExplorationRecording& in = result.recording;
   report::Recording rec;
   rec.title = "Swarm exploration (seed 004): " + std::string(exploration::to_string(result.method));
-  char summary[200];
+  char summary[400];
   std::snprintf(summary, sizeof summary,
                 "%d robots explore an unknown world; final coverage %.1f %% after %.0f s, %.0f m "
                 "driven, %d collisions. The team map grows as the robots explore (cells appear "
