@@ -14,7 +14,8 @@ TB3 = os.path.join(ROOT, "data", "ros_maps", "turtlebot3_world", "map.yaml")
 run = runner(BIN, timeout=240)
 
 
-KEYS = ["coverage", "t90_s", "t99_s", "distance_m", "collisions", "feature_points", "leaves"]
+KEYS = ["coverage", "t90_s", "t99_s", "distance_m", "collisions", "feature_points", "leaves",
+        "stalled_robots", "dispatches", "leaves_reached", "tree_time_s"]
 
 
 def case_paper_json():
@@ -27,6 +28,8 @@ def case_paper_json():
     check(0.0 < out["coverage"] <= 1.0, str(out))
     check(out["t99_s"] is None or out["t99_s"] >= (out["t90_s"] or 0), str(out))
     check(out["feature_points"] > 0 and out["leaves"] > 0, str(out))
+    # One dispatch (the paper): one per robot, at the tree start.
+    check(out["dispatches"] == 4 and out["tree_time_s"] == 80 and out["trees"] == 1, str(out))
 
 
 def case_ros_map_coordinated():
@@ -54,6 +57,8 @@ def case_out_folder():
 def case_errors():
     p = run("explore", "--world", "paper", "--method", "random", expect=2)
     check("tree, frontier, coordinated" in p.stderr, p.stderr)
+    p = run("explore", "--world", "paper", "--tree-replan", "always", expect=2)
+    check("--tree-replan" in p.stderr and "none, robots" in p.stderr, p.stderr)
     p = run("explore", "--world", "paper", "--start", "0.05,0.05", expect=2)
     check("--start" in p.stderr and "not free" in p.stderr, p.stderr)
     p = run("explore", "--world", "paper", "--start", "abc", expect=2)

@@ -24,6 +24,7 @@ struct ExploreArgs {
   std::string method = "tree";
   double time = 600.0;
   double tree_start = 400.0;
+  std::string tree_replan = "none";
   std::uint64_t seed = 1;
   std::string start;
   std::filesystem::path out;
@@ -64,7 +65,7 @@ void save_pictures(const OccupancyGrid& world, const exploration::ExplorationRes
     draw_trajectories(fig, r);
     fig.save(dir / "explore.png");
   }
-  if (r.method != exploration::ExplorationMethod::kTree) return;
+  if (r.recording.tree.empty()) return;
   render::Figure fig(world.geometry(),
                      {.auto_side_px = side_px, .title = "feature points, Voronoi tree and routes"});
   fig.occupancy(world);
@@ -102,6 +103,7 @@ void run(const ExploreArgs& a) {
   o.robots = a.robots;
   o.time_limit = a.time;
   o.tree_start_time = a.tree_start;
+  o.tree_replan = exploration::parse_tree_replan(a.tree_replan);
   o.seed = a.seed;
   o.stop_at_coverage = a.stop_at;
   if (!a.start.empty())
@@ -142,7 +144,8 @@ void run(const ExploreArgs& a) {
               << "collisions:     " << r.collisions << "\n"
               << "overlap:        " << r.overlap << "\n"
               << "feature points: " << r.feature_points << "\n"
-              << "leaves:         " << r.leaves << "\n";
+              << "leaves:         " << r.leaves << " (" << r.leaves_reached << " reached)\n"
+              << "stalled robots: " << r.stalled_robots << "\n";
   }
 }
 
@@ -158,7 +161,12 @@ void setup(CLI::App& app) {
   cmd->add_option("--robots", args->robots, "Number of robots (1..64)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
-  cmd->add_option("--method", args->method, "tree | frontier | coordinated")->capture_default_str();
+  cmd->add_option("--method", args->method, "tree | frontier | coordinated | tree-frontier")
+      ->capture_default_str();
+  cmd->add_option("--tree-replan", args->tree_replan,
+                  "tree: after its leaves a robot searches reactively (none, the paper) or gets a "
+                  "new tree rooted where it is (robots)")
+      ->capture_default_str();
   cmd->add_option("--time", args->time, "Simulated time limit [s]")
       ->check(finite_range(1e-3, 1e6))
       ->capture_default_str();

@@ -194,14 +194,36 @@ report::Recording exploration_recording(const exploration::ExplorationResult& re
   const exploration::ExplorationRecording& in = result.recording;
   report::Recording rec;
   rec.title = "Swarm exploration (seed 004): " + std::string(exploration::to_string(result.method));
-  char summary[200];
+  char summary[400];
   std::snprintf(summary, sizeof summary,
                 "%d robots explore an unknown world; final coverage %.1f %% after %.0f s, %.0f m "
-                "driven, %d collisions. The map is the team's merged map at the end.",
+                "driven, %d collisions. The team map grows as the robots explore (cells appear "
+                "when first seen: free light orange, obstacles orange).",
                 result.robots, 100.0 * result.coverage, result.sim_time_s, result.distance_m,
                 result.collisions);
   rec.description = summary;
   rec.map = in.team_map;
+  if (in.reveal_time.size() == in.team_map.size()) {
+    // The known map over time: start unknown, reveal every cell at its first-seen time.
+    rec.map = OccupancyGrid(in.team_map.geometry(), kUnknown);
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < in.reveal_time.size(); ++i)
+      if (in.reveal_time[i] >= 0.0F && in.team_map[in.team_map.cell_at(i)] != kUnknown)
+        order.push_back(i);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return in.reveal_time[a] < in.reveal_time[b];
+    });
+    for (std::size_t k = 0; k < order.size();) {
+      const float t = in.reveal_time[order[k]];
+      report::ObstacleChange free_cells{t, {}, kFree}, occupied{t, {}, kOccupied};
+      for (; k < order.size() && in.reveal_time[order[k]] == t; ++k) {
+        const Cell c = in.team_map.cell_at(order[k]);
+        (in.team_map[c] == kOccupied ? occupied : free_cells).cells.push_back(c);
+      }
+      for (auto* ch : {&free_cells, &occupied})
+        if (!ch->cells.empty()) rec.obstacle_changes.push_back(std::move(*ch));
+    }
+  }
   const std::size_t n = in.frames.empty() ? 0 : in.frames.front().poses.size();
   for (std::size_t r = 0; r < n; ++r) {
     report::RobotTrack t;
@@ -229,7 +251,9 @@ report::Recording exploration_recording(const exploration::ExplorationResult& re
       fp.nodes.push_back({static_cast<int>(i), in.feature_points[i].position, ""});
     rec.graphs.push_back(std::move(fp));
   }
-  const double tree_time = in.frames.empty() ? 0.0 : in.frames.front().t;
+  const double tree_time = in.tree_time >= 0.0 ? in.tree_time
+                           : in.frames.empty() ? 0.0
+                                               : in.frames.front().t;
   for (std::size_t r = 0; r < in.routes.size() && r < n; ++r)
     if (in.routes[r].size() >= 2)
       rec.paths.push_back({static_cast<int>(r), tree_time, "tree route", in.routes[r]});

@@ -37,9 +37,20 @@ struct Agent {
   std::size_t next = 0;
   double blocked_time = 0.0;
   double since_progress = 0.0;
-  double reactive_until = 0.0;  // [s] a deadlocked robot searches reactively until then
-  std::optional<Vec2> goal;     // frontier goal
-  std::vector<Vec2> blacklist;  // unreachable frontier goals
+  double reactive_until = 0.0;         // [s] a deadlocked robot searches reactively until then
+  std::optional<Vec2> goal;            // frontier goal
+  std::vector<Vec2> blacklist;         // unreachable frontier goals
+  bool on_tree = false;                // following a leg of a tree dispatch
+  std::deque<std::vector<Vec2>> legs;  // tree legs still to drive, each ending at a leaf
+  bool tree_done = false;              // its dispatched leaves are done (or given up)
+  bool use_frontier = false;           // kTreeFrontier: in the frontier phase
+  double retry_at = 0.0;               // [s] TreeReplan::kFromRobots: next attempt
+  Vec2 anchor;                         // stall watch: where it has stayed since anchor_t
+  double anchor_t = 0.0;
+  Vec2 wd_anchor;  // progress watchdog (give up a goal when stuck)
+  double wd_t = 0.0;
+  double back_off_until = 0.0;  // [s] yields to a robot with a lower index until then
+  bool stalled = false;
 };
 
 OccupancyGrid team_grid(const mapping::OccupancyMap& m) {
@@ -133,16 +144,30 @@ std::string_view to_string(ExplorationMethod m) {
       return "frontier";
     case ExplorationMethod::kCoordinated:
       return "coordinated";
+    case ExplorationMethod::kTreeFrontier:
+      return "tree-frontier";
   }
   return "?";
+}
+
+std::string_view to_string(TreeReplan r) {
+  return r == TreeReplan::kNone ? "none" : "robots";
+}
+
+TreeReplan parse_tree_replan(std::string_view name) {
+  if (name == "none") return TreeReplan::kNone;
+  if (name == "robots") return TreeReplan::kFromRobots;
+  throw Error("--tree-replan", 0, "expected one of none, robots; got '" + std::string(name) + "'");
 }
 
 ExplorationMethod parse_exploration_method(std::string_view name) {
   if (name == "tree") return ExplorationMethod::kTree;
   if (name == "frontier") return ExplorationMethod::kFrontier;
   if (name == "coordinated") return ExplorationMethod::kCoordinated;
+  if (name == "tree-frontier") return ExplorationMethod::kTreeFrontier;
   throw Error("--method", 0,
-              "expected one of tree, frontier, coordinated; got '" + std::string(name) + "'");
+              "expected one of tree, frontier, coordinated, tree-frontier; got '" +
+                  std::string(name) + "'");
 }
 
 void ExplorationOptions::validate() const {
@@ -161,6 +186,13 @@ void ExplorationOptions::validate() const {
   positive(replan_period, "replan_period");
   positive(goal_tolerance, "goal_tolerance");
   positive(min_cell_size, "min_cell_size");
+  positive(gain_radius, "gain_radius");
+  positive(stall_time, "stall_time");
+  positive(stall_distance, "stall_distance");
+  if (!(min_leaf_gain >= 0.0 && min_leaf_gain <= 1.0))
+    throw Error("ExplorationOptions.min_leaf_gain", 0, "expected 0..1");
+  if (!(hybrid_tree_start_time >= 0.0) || !std::isfinite(hybrid_tree_start_time))
+    throw Error("ExplorationOptions.hybrid_tree_start_time", 0, "expected a finite number >= 0");
   if (!(tree_start_time >= 0.0) || !std::isfinite(tree_start_time))
     throw Error("ExplorationOptions.tree_start_time", 0, "expected a finite number >= 0");
   if (!(clearance >= 0.0)) throw Error("ExplorationOptions.clearance", 0, "expected >= 0");
@@ -311,14 +343,19 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   const double plan_radius = body + o.clearance;
   BinaryGrid trav;
   planning::BfsFlood flood;
-  bool tree_phase = false;
-  double next_tree_time = o.tree_start_time;
-  double next_replan = 0.0;
+  const bool tree_method =
+      o.method == ExplorationMethod::kTree || o.method == ExplorationMethod::kTreeFrontier;
+  const bool hybrid = o.method == ExplorationMethod::kTreeFrontier;
+  const double tree_start = hybrid ? o.hybrid_tree_start_time : o.tree_start_time;
+  bool dispatched = false;  // the single dispatch of the first tree has happened
+  double next_tree_time = tree_start;
+  double next_replan = 0.0, next_check = 0.0, last_coverage = 0.0;
   const auto steps_per = [&](double period) {
     return std::max<long>(1, std::lround(period / o.dt));
   };
   const long map_every = steps_per(o.map_period), record_every = steps_per(o.record_period);
   const long total_steps = std::lround(o.time_limit / o.dt);
+  result.recording.reveal_time.assign(blocked.size(), -1.0F);
 
   const auto coverage_now = [&] {
     const auto l = team.log_odds().data();
@@ -329,15 +366,6 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
                            : 0.0;
   };
 
-  // Route for agent a from its position to `goal_cell` on trav (BFS descent), simplified.
-  const auto route_to = [&](Agent& a, Cell goal_cell) -> std::vector<Vec2> {
-    const auto from = nearest_free(trav, a.body.true_pose().position);
-    if (!from || flood.flood(trav, *from, planning::Connectivity::k8) == 0) return {};
-    std::vector<Vec2> path = descend(trav, flood, goal_cell);
-    if (path.empty()) return {};
-    path.insert(path.begin(), a.body.true_pose().position);
-    return simplify(trav, path);
-  };
   const auto start_follow = [&](Agent& a, std::vector<Vec2> route) {
     a.route = std::move(route);
     a.next = 0;
@@ -346,52 +374,227 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     a.since_progress = 0.0;
   };
 
-  const auto build_tree = [&](double t) {
+  // --- tree dispatch (seed 004) ---
+  // Path on `grid` from p to the free cell nearest q (BFS descent, simplified); empty when none.
+  const auto path_on = [&](const BinaryGrid& grid, Vec2 p, Vec2 q) -> std::vector<Vec2> {
+    const auto from = nearest_free(grid, p);
+    const auto to = nearest_free(grid, q, 4);
+    if (!from || !to || flood.flood(grid, *from, planning::Connectivity::k8) == 0) return {};
+    std::vector<Vec2> path = descend(grid, flood, *to);
+    if (path.empty()) return {};
+    path.insert(path.begin(), p);
+    return simplify(grid, path);
+  };
+  // The next leg of a robot's tree route, or (none left) the end of its dispatch.
+  const auto start_leg = [&](Agent& a, double t) {
+    if (!a.legs.empty()) {
+      start_follow(a, a.legs.front());
+      a.on_tree = true;
+      return;
+    }
+    a.on_tree = false;
+    a.tree_done = true;
+    a.mode = AgentMode::kReactive;  // the paper: search reactively again
+    a.route.clear();
+    if (hybrid) {
+      a.use_frontier = true;
+      next_replan = t;
+    }
+    a.retry_at = t;
+  };
+  const auto finish_leg = [&](Agent& a, double t) {
+    if (!a.legs.empty()) {
+      if (distance(a.body.true_pose().position, a.legs.front().back()) < 2.0 * o.goal_tolerance)
+        ++result.leaves_reached;
+      a.legs.pop_front();
+    }
+    start_leg(a, t);
+  };
+  const auto unknown_fraction = [&](const OccupancyGrid& map, Vec2 p) {
+    const auto c = g.world_to_cell(p);
+    if (!c) return 0.0;
+    const int r = static_cast<int>(std::ceil(o.gain_radius / g.resolution));
+    int unknown = 0, all = 0;
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
+        const Cell n{c->x + dx, c->y + dy};
+        if (dx * dx + dy * dy > r * r) continue;
+        ++all;
+        if (!map.contains(n) || map[n] == kUnknown) ++unknown;
+      }
+    return all ? static_cast<double>(unknown) / all : 0.0;
+  };
+  const auto record_dispatch = [&](double t, std::size_t i, bool first, Vec2 root,
+                                   const std::vector<Vec2>& leaves) {
+    Agent& a = *agents[i];
+    TreeDispatch d;
+    d.t = t;
+    d.robot = static_cast<int>(i);
+    d.first = first;
+    d.from = a.body.true_pose().position;
+    d.root = root;
+    d.leaves = leaves;
+    d.route = a.legs.empty() ? std::vector<Vec2>{} : a.legs.front();
+    result.recording.dispatches.push_back(std::move(d));
+    ++result.dispatches;
+  };
+
+  // The single dispatch (figure 9): the tree of all feature points on the team map where only
+  // known obstacles block, rooted at the vertex nearest the start; leaves by distance, robot i
+  // takes leaves i, i + N, ...; the route runs from the root down the common trunk (kTree) or
+  // joins the root-to-leaf chain at its node nearest the robot (kTreeFrontier).
+  const auto dispatch_first = [&](double t) {
     const OccupancyGrid tg = team_grid(team);
-    trav = traversable_of(tg, plan_radius);
-    const std::vector<Vec2> pts = features.positions();
-    const PointVoronoi vor = voronoi_of_points(pts);
-    VoronoiTree tree = build_voronoi_tree(vor, trav, centre, o.tree);
-    const std::vector<int> leaves = tree.leaves_by_distance();
+    const BinaryGrid opt = tree_grid(tg, plan_radius);
+    const PointVoronoi vor = voronoi_of_points(features.positions());
+    VoronoiTree tree = build_voronoi_tree(vor, opt, centre, o.tree);
     ++result.trees;
+    std::vector<int> leaves = tree.leaves_by_distance();
+    if (hybrid)
+      std::erase_if(leaves, [&](int l) {
+        return unknown_fraction(tg, tree.nodes[static_cast<std::size_t>(l)].position) <
+               o.min_leaf_gain;
+      });
     if (tree.empty() || leaves.empty()) return false;
-    const auto dispatch = dispatch_leaves(tree, o.robots);
+    std::vector<std::vector<int>> dispatch = dispatch_leaves(leaves, o.robots);
     const Vec2 root = tree.nodes[static_cast<std::size_t>(tree.root)].position;
-    const auto root_cell = g.world_to_cell(root);
     std::vector<std::vector<Vec2>> routes;
     for (std::size_t i = 0; i < agents.size(); ++i) {
       Agent& a = *agents[i];
-      // To the root (the common trunk starts there), then leaf after leaf along the tree.
-      std::vector<Vec2> route = route_to(a, *root_cell);
-      if (route.empty()) route = {a.body.true_pose().position, root};
+      const Vec2 pos = a.body.true_pose().position;
+      if (hybrid && i >= leaves.size()) dispatch[i].clear();  // no leaf of its own
+      if (hybrid && dispatch[i].size() > 1) dispatch[i].resize(1);
+      a.legs.clear();
+      std::vector<Vec2> full{pos}, goals;
       int at = tree.root;
-      for (int leaf : dispatch[i]) {
+      if (hybrid && !dispatch[i].empty()) {
+        double best = std::numeric_limits<double>::infinity();
+        for (int n : tree.node_route(tree.root, dispatch[i].front())) {
+          const double d = distance(pos, tree.nodes[static_cast<std::size_t>(n)].position);
+          if (d < best) {
+            best = d;
+            at = n;
+          }
+        }
+      }
+      for (std::size_t k = 0; k < dispatch[i].size(); ++k) {
+        const int leaf = dispatch[i][k];
+        std::vector<Vec2> leg;
+        if (k == 0) {
+          const Vec2 entry = tree.nodes[static_cast<std::size_t>(at)].position;
+          leg = path_on(opt, pos, entry);
+          if (leg.size() < 2)
+            leg = {pos, entry};
+          else
+            leg.back() = entry;  // the path ends in the entry node's cell: end exactly on it
+        } else {
+          leg = {tree.nodes[static_cast<std::size_t>(at)].position};
+        }
         const std::vector<Vec2> w = tree.waypoints(at, leaf);
-        route.insert(route.end(), w.begin() + 1, w.end());
+        leg.insert(leg.end(), w.begin() + 1, w.end());
+        full.insert(full.end(), leg.begin() + 1, leg.end());
+        goals.push_back(tree.nodes[static_cast<std::size_t>(leaf)].position);
+        a.legs.push_back(std::move(leg));
         at = leaf;
       }
-      routes.push_back(route);
-      start_follow(a, std::move(route));
+      routes.push_back(std::move(full));
+      a.tree_done = false;
       a.reactive_until = 0.0;
+      if (a.legs.empty()) {
+        if (hybrid) a.use_frontier = true;
+        a.tree_done = true;
+        continue;
+      }
+      start_leg(a, t);
+      record_dispatch(t, i, true, root, goals);
     }
-    if (result.trees == 1 || result.recording.tree.empty()) {
-      result.leaves = static_cast<int>(leaves.size());
-      result.recording.tree = std::move(tree);
-      result.recording.dispatch = dispatch;
-      result.recording.routes = std::move(routes);
-    }
-    (void)t;
+    result.leaves = static_cast<int>(tree.leaves_by_distance().size());
+    result.recording.tree = std::move(tree);
+    result.recording.dispatch = std::move(dispatch);
+    result.recording.routes = std::move(routes);
+    result.recording.tree_time = t;
     return true;
   };
 
+  // TreeReplan::kFromRobots: a robot done with its leaves gets a tree rooted where it is and goes
+  // to the nearest leaf that still looks into unknown space and no other robot is heading to.
+  const auto replan_from_robot = [&](std::size_t i, double t) {
+    Agent& a = *agents[i];
+    a.retry_at = t + 10.0;
+    const Vec2 pos = a.body.true_pose().position;
+    const OccupancyGrid tg = team_grid(team);
+    const BinaryGrid opt = tree_grid(tg, plan_radius);
+    const PointVoronoi vor = voronoi_of_points(features.positions());
+    const VoronoiTree tree = build_voronoi_tree(vor, opt, pos, o.tree);
+    ++result.trees;
+    if (tree.empty()) return;
+    for (int leaf : tree.leaves_by_distance()) {
+      const Vec2 lp = tree.nodes[static_cast<std::size_t>(leaf)].position;
+      if (unknown_fraction(tg, lp) < o.min_leaf_gain) continue;
+      bool taken = false;
+      for (std::size_t j = 0; j < agents.size(); ++j)
+        if (j != i && agents[j]->on_tree && !agents[j]->legs.empty())
+          taken = taken || distance(agents[j]->legs.back().back(), lp) < 2.0;
+      if (taken) continue;
+      const Vec2 root = tree.nodes[static_cast<std::size_t>(tree.root)].position;
+      std::vector<Vec2> leg = path_on(opt, pos, root);
+      if (leg.empty()) return;
+      if (leg.size() > 1)
+        leg.back() = root;
+      else
+        leg.push_back(root);
+      const std::vector<Vec2> w = tree.waypoints(tree.root, leaf);
+      leg.insert(leg.end(), w.begin() + 1, w.end());
+      a.legs.assign(1, std::move(leg));
+      a.tree_done = false;
+      start_leg(a, t);
+      record_dispatch(t, i, false, root, {lp});
+      return;
+    }
+  };
+
+  // Tree routes run through unknown space: when the map shows a known obstacle on the rest of a
+  // leg, the leg is re-planned from where the robot is to its leaf (BFS on the grid where only
+  // known obstacles block); a leaf that became unreachable is given up.
+  const auto check_tree_routes = [&](double t) {
+    bool any = false;
+    for (auto& ap : agents)
+      any = any || (ap->on_tree && ap->mode == AgentMode::kFollow);
+    if (!any) return;
+    const BinaryGrid opt = tree_grid(team_grid(team), plan_radius);
+    for (auto& ap : agents) {
+      Agent& a = *ap;
+      if (!a.on_tree || a.mode != AgentMode::kFollow || t < a.reactive_until) continue;
+      const Vec2 pos = a.body.true_pose().position;
+      bool ok = nearest_free(opt, a.route.back(), 1).has_value();
+      const auto pc = g.world_to_cell(pos);
+      if (ok && a.next < a.route.size() && pc && opt[*pc] == 0)
+        ok = segment_free(opt, pos, a.route[a.next]);
+      for (std::size_t k = std::max<std::size_t>(a.next, 1); ok && k < a.route.size(); ++k)
+        ok = segment_free(opt, a.route[k - 1], a.route[k]);
+      if (ok) continue;
+      std::vector<Vec2> path = path_on(opt, pos, a.route.back());
+      if (path.empty() || distance(path.back(), a.route.back()) > 0.5) {
+        finish_leg(a, t);  // unreachable now: give the leaf up
+        continue;
+      }
+      a.legs.front() = path;
+      start_follow(a, std::move(path));
+    }
+  };
+
   const auto replan_frontiers = [&] {
+    std::vector<std::size_t> active;
+    for (std::size_t i = 0; i < agents.size(); ++i)
+      if (!hybrid || agents[i]->use_frontier) active.push_back(i);
+    if (active.empty()) return;
     const OccupancyGrid tg = team_grid(team);
     trav = traversable_of(tg, plan_radius);
     const std::vector<Frontier> fr = find_frontiers(tg, trav, o.frontier);
-    std::vector<std::vector<double>> costs(agents.size(), std::vector<double>(fr.size(), -1.0));
-    std::vector<std::vector<std::vector<Vec2>>> paths(agents.size());
-    for (std::size_t i = 0; i < agents.size(); ++i) {
-      Agent& a = *agents[i];
+    std::vector<std::vector<double>> costs(active.size(), std::vector<double>(fr.size(), -1.0));
+    std::vector<std::vector<std::vector<Vec2>>> paths(active.size());
+    for (std::size_t r = 0; r < active.size(); ++r) {
+      Agent& a = *agents[active[r]];
       const auto from = nearest_free(trav, a.body.true_pose().position);
       if (!from || flood.flood(trav, *from, planning::Connectivity::k8) == 0) continue;
       for (std::size_t f = 0; f < fr.size(); ++f) {
@@ -400,32 +603,32 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         for (const Vec2& b : a.blacklist)
           banned = banned || distance(b, tp) < 0.5;
         const std::int32_t s = flood.steps(trav, fr[f].target);
-        if (!banned && s >= 0) costs[i][f] = s * g.resolution;
+        if (!banned && s >= 0) costs[r][f] = s * g.resolution;
       }
       // Paths only for the frontiers this robot might take are made below (same flood reused).
-      paths[i].resize(fr.size());
+      paths[r].resize(fr.size());
       const std::vector<int> mine = o.method == ExplorationMethod::kFrontier
-                                        ? assign_nearest(fr, {costs[i]}, o.frontier)
+                                        ? assign_nearest(fr, {costs[r]}, o.frontier)
                                         : std::vector<int>{};
       if (!mine.empty() && mine[0] >= 0) {
         const auto k = static_cast<std::size_t>(mine[0]);
-        paths[i][k] = descend(trav, flood, fr[k].target);
+        paths[r][k] = descend(trav, flood, fr[k].target);
       }
     }
     std::vector<int> choice = o.method == ExplorationMethod::kFrontier
                                   ? assign_nearest(fr, costs, o.frontier)
                                   : assign_coordinated(fr, costs, o.frontier);
-    for (std::size_t i = 0; i < agents.size(); ++i) {
-      Agent& a = *agents[i];
-      if (choice[i] < 0) {
+    for (std::size_t r = 0; r < active.size(); ++r) {
+      Agent& a = *agents[active[r]];
+      if (choice[r] < 0) {
         a.goal.reset();
         if (a.mode == AgentMode::kFollow && a.route.empty()) a.mode = AgentMode::kReactive;
         continue;
       }
-      const auto k = static_cast<std::size_t>(choice[i]);
+      const auto k = static_cast<std::size_t>(choice[r]);
       const Vec2 tp = g.cell_center(fr[k].target);
       if (a.goal && distance(*a.goal, tp) < 0.5 && a.mode == AgentMode::kFollow) continue;
-      std::vector<Vec2> path = paths[i][k];
+      std::vector<Vec2> path = paths[r][k];
       if (path.empty()) {
         const auto from = nearest_free(trav, a.body.true_pose().position);
         if (from && flood.flood(trav, *from, planning::Connectivity::k8) > 0)
@@ -434,12 +637,15 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       if (path.empty()) continue;
       path.insert(path.begin(), a.body.true_pose().position);
       a.goal = tp;
+      ++result.frontier_goals;
       start_follow(a, simplify(trav, path));
     }
   };
 
   // --- the loop ---
   std::vector<robot::Disc> others;
+  for (auto& ap : agents)
+    ap->anchor = ap->body.true_pose().position;
   double t = 0.0;
   for (long step = 0; step < total_steps; ++step) {
     t = static_cast<double>(step) * o.dt;
@@ -459,22 +665,33 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         }
         a.map.insert_scan(rs, beam_model);
         team.insert_scan(rs, beam_model);
-        if (o.method == ExplorationMethod::kTree)
-          features.add(extract_feature_points(scan, o.features));
+        if (tree_method) features.add(extract_feature_points(scan, o.features));
       }
     }
     // Decide.
-    if (o.method == ExplorationMethod::kTree) {
-      bool all_reactive = true;
-      for (auto& ap : agents)
-        all_reactive = all_reactive && ap->mode == AgentMode::kReactive;
-      if (t >= next_tree_time && (!tree_phase || all_reactive)) {
-        tree_phase = true;
-        // A new tree when the previous dispatch is finished (at most every 30 s).
-        if (!build_tree(t))
-          next_tree_time = t + 30.0;
-        else
-          next_tree_time = t + 30.0;
+    if (tree_method) {
+      if (!dispatched && t >= next_tree_time) {
+        if (dispatch_first(t)) {
+          dispatched = true;
+        } else if (hybrid && t >= tree_start + 30.0) {
+          dispatched = true;  // no tree worth following: all robots go to frontiers
+          for (auto& ap : agents)
+            ap->use_frontier = true;
+        } else {
+          next_tree_time = t + 30.0;  // too few feature points yet: try again later
+        }
+      }
+      if (dispatched && t >= next_check) {
+        check_tree_routes(t);
+        next_check = t + o.replan_period;
+      }
+      if (dispatched && !hybrid && o.tree_replan == TreeReplan::kFromRobots)
+        for (std::size_t i = 0; i < agents.size(); ++i)
+          if (agents[i]->tree_done && !agents[i]->on_tree && t >= agents[i]->retry_at)
+            replan_from_robot(i, t);
+      if (dispatched && hybrid && t >= next_replan) {
+        replan_frontiers();
+        next_replan = t + o.replan_period;
       }
     } else if (t >= next_replan) {
       replan_frontiers();
@@ -498,8 +715,12 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           a.since_progress = 0.0;
         }
         if (a.next >= a.route.size()) {
-          a.mode = AgentMode::kReactive;
           a.goal.reset();
+          if (a.on_tree) {
+            finish_leg(a, t);
+          } else {
+            a.mode = AgentMode::kReactive;
+          }
           cmd = {};
         } else {
           const Vec2 target = a.route[a.next];
@@ -515,16 +736,28 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           if (front < body + 0.12 && cmd.v > 0.0) {
             cmd.v = 0.0;
             a.blocked_time += o.dt;
+            // Right of way: blocked by a robot with a lower index (not by a wall), this robot
+            // backs off for a moment so that a jam in a doorway dissolves.
+            const robot::LaserScan walls = robot::cast_scan(blocked, pose, guard_laser, {});
+            double wall_front = walls.range_max;
+            for (float r : walls.ranges)
+              wall_front = std::min(wall_front, static_cast<double>(r));
+            if (wall_front > front + 0.05)
+              for (std::size_t j = 0; j < i; ++j)
+                if (distance(agents[j]->body.true_pose().position, pose.position) <
+                    2.0 * body + 0.3)
+                  a.back_off_until = t + 2.0;
           } else {
             a.blocked_time = 0.0;
           }
+          if (t < a.back_off_until) cmd = {-0.1, 0.0};
           a.since_progress += o.dt;
           if (a.blocked_time > 3.0 || a.since_progress > 30.0) {
             // Deadlock or no progress: search reactively for a while, then drop the goal.
             a.reactive_until = t + 5.0;
             a.blocked_time = 0.0;
             a.since_progress = 0.0;
-            if (o.method != ExplorationMethod::kTree) {
+            if (!a.on_tree) {
               if (a.goal) a.blacklist.push_back(*a.goal);
               a.goal.reset();
               a.route.clear();
@@ -551,6 +784,35 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       }
       a.body.command(cmd);
       a.body.step(o.dt, blocked, others);
+      // Stall watch: idle (within stall_distance of one spot) for stall_time while reachable
+      // unknown space remains.
+      const Vec2 now = a.body.true_pose().position;
+      // Progress watchdog: a robot that has not left a stall_distance circle for a third of
+      // stall_time gives up its goal (tree leaf or frontier) and searches reactively for a while.
+      if (distance(now, a.wd_anchor) > o.stall_distance) {
+        a.wd_anchor = now;
+        a.wd_t = t;
+      } else if (t - a.wd_t > o.stall_time / 3.0) {
+        a.wd_anchor = now;
+        a.wd_t = t;
+        ++result.watchdog_events;
+        if (a.on_tree) {
+          finish_leg(a, t);
+        } else if (a.mode == AgentMode::kFollow) {
+          if (a.goal) a.blacklist.push_back(*a.goal);
+          a.goal.reset();
+          a.route.clear();
+          a.mode = AgentMode::kReactive;
+        }
+        a.reactive_until = t + 10.0;
+      }
+      if (distance(now, a.anchor) > o.stall_distance) {
+        a.anchor = now;
+        a.anchor_t = t;
+      } else if (!a.stalled && t - a.anchor_t > o.stall_time && last_coverage < 0.99) {
+        a.stalled = true;
+        ++result.stalled_robots;
+      }
     }
     // Record.
     if ((step + 1) % record_every == 0 || step + 1 == total_steps) {
@@ -559,6 +821,13 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       for (auto& ap : agents)
         f.poses.push_back(ap->body.true_pose());
       f.coverage = coverage_now();
+      last_coverage = f.coverage;
+      {
+        const auto l = team.log_odds().data();
+        auto& rt = result.recording.reveal_time;
+        for (std::size_t k = 0; k < l.size(); ++k)
+          if (rt[k] < 0.0F && l[k] != 0.0F) rt[k] = static_cast<float>(f.t);
+      }
       if (!result.t90_s && f.coverage >= 0.90) result.t90_s = f.t;
       if (!result.t99_s && f.coverage >= 0.99) result.t99_s = f.t;
       const bool stop = f.coverage >= o.stop_at_coverage;
@@ -566,7 +835,6 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       if (stop) break;
     }
   }
-
   // --- results ---
   result.sim_time_s = result.recording.frames.empty() ? 0.0 : result.recording.frames.back().t;
   result.coverage = coverage_now();
@@ -595,7 +863,10 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"t99_s\":" << opt(r.t99_s) << ",\"sim_time_s\":" << num(r.sim_time_s)
      << ",\"distance_m\":" << num(r.distance_m) << ",\"collisions\":" << r.collisions
      << ",\"overlap\":" << num(r.overlap) << ",\"feature_points\":" << r.feature_points
-     << ",\"leaves\":" << r.leaves << ",\"trees\":" << r.trees
+     << ",\"leaves\":" << r.leaves << ",\"trees\":" << r.trees << ",\"dispatches\":" << r.dispatches
+     << ",\"leaves_reached\":" << r.leaves_reached << ",\"frontier_goals\":" << r.frontier_goals
+     << ",\"stalled_robots\":" << r.stalled_robots << ",\"watchdog_events\":" << r.watchdog_events
+     << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;
   if (include_recording) {
     const ExplorationRecording& rec = r.recording;
@@ -638,7 +909,17 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
         os << (k ? "," : "") << pt(rec.routes[i][k]);
       os << "]";
     }
-    os << "]}";
+    os << "],\"dispatches\":[";
+    for (std::size_t i = 0; i < rec.dispatches.size(); ++i) {
+      const TreeDispatch& d = rec.dispatches[i];
+      os << (i ? "," : "") << "{\"t\":" << num(d.t) << ",\"robot\":" << d.robot
+         << ",\"first\":" << (d.first ? "true" : "false") << ",\"from\":" << pt(d.from)
+         << ",\"root\":" << pt(d.root) << ",\"leaves\":[";
+      for (std::size_t k = 0; k < d.leaves.size(); ++k)
+        os << (k ? "," : "") << pt(d.leaves[k]);
+      os << "]}";
+    }
+    os << "],\"tree_time\":" << num(rec.tree_time) << "}";
   }
   os << "}";
   return os.str();

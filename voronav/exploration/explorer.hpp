@@ -1,13 +1,18 @@
 // The exploration runner: a deterministic stepping loop over a ground-truth world with a team of
 // simulated differential-drive robots (robot module), each mapping with its laser (mapping
-// module), exploring with one of three methods:
+// module), exploring with one of four methods:
 //  * kTree (seed 004): reactive 4-sector search with wall following until tree_start_time
-//    (400 s in the paper), collecting feature points; then the Voronoi tree of the feature points
-//    is built on the team map and the robots travel the common trunk and split to its leaves
-//    (figure 9); robots that finished their leaves search reactively again, and when all have,
-//    a new tree is built from the features found so far;
+//    (400 s in the paper), collecting feature points; then ONE dispatch: the Voronoi tree of the
+//    feature points (nodes may lie in unknown space; only known obstacles block) and the robots
+//    travel from the root along the common trunk and split to its leaves in figure 9's order;
+//    a robot whose leaves are done searches reactively again (the paper). The option
+//    tree_replan = kFromRobots (ours, not the paper's) gives such a robot a new tree rooted
+//    where it is, never back at the start;
 //  * kFrontier: nearest frontier per robot (Yamauchi; ROS explore_lite);
-//  * kCoordinated: Burgard et al. 2005 utility - cost assignment.
+//  * kCoordinated: Burgard et al. 2005 utility - cost assignment;
+//  * kTreeFrontier (ours): a short reactive phase, one tree dispatch to the leaves that still
+//    look into unknown space (each robot joins the trunk where it is nearest), then Burgard's
+//    coordinated frontiers for every robot that reached (or gave up) its leaf.
 // Everything is seeded: the same options give the same result. The recording (poses per frame,
 // feature points, tree, routes) is a plain struct written as JSON for replay viewers.
 #pragma once
@@ -29,10 +34,19 @@
 
 namespace voronav::exploration {
 
-enum class ExplorationMethod { kTree, kFrontier, kCoordinated };
+enum class ExplorationMethod { kTree, kFrontier, kCoordinated, kTreeFrontier };
 [[nodiscard]] std::string_view to_string(ExplorationMethod m);
-/// "tree" / "frontier" / "coordinated"; throws voronav::Error naming the accepted values.
+/// "tree" / "frontier" / "coordinated" / "tree-frontier"; throws voronav::Error naming the
+/// accepted values.
 [[nodiscard]] ExplorationMethod parse_exploration_method(std::string_view name);
+
+/// What a kTree robot does after its dispatched leaves: kNone = reactive search (the paper);
+/// kFromRobots = a new tree rooted at the vertex nearest the robot, to the nearest leaf that still
+/// looks into unknown space and no other robot is heading to (ours; never back to the start).
+enum class TreeReplan { kNone, kFromRobots };
+[[nodiscard]] std::string_view to_string(TreeReplan r);
+/// "none" / "robots"; throws voronav::Error naming the accepted values.
+[[nodiscard]] TreeReplan parse_tree_replan(std::string_view name);
 
 struct ExplorationOptions {
   ExplorationMethod method = ExplorationMethod::kTree;
@@ -47,9 +61,20 @@ struct ExplorationOptions {
   int map_beam_stride = 2;         ///< every k-th beam is used for mapping
   double record_period = 1.0;      ///< a frame is recorded this often [s]
   double tree_start_time = 400.0;  ///< [s] reactive search before the first tree (seed 004)
-  double replan_period = 2.0;      ///< [s] frontier targets are re-assigned this often
-  double goal_tolerance = 0.3;     ///< [m] a waypoint or goal counts as reached
-  double clearance = 0.1;          ///< [m] added to the body radius when planning paths
+  TreeReplan tree_replan = TreeReplan::kNone;  ///< kTree only (see TreeReplan)
+  /// [s] kTreeFrontier: reactive search (feature collection) before its single tree dispatch.
+  double hybrid_tree_start_time = 60.0;
+  /// A leaf "looks into unknown space" when at least this fraction of the cells within
+  /// gain_radius of it is unknown in the team map (kTreeFrontier, kFromRobots).
+  double min_leaf_gain = 0.15;
+  double gain_radius = 3.0;  ///< [m] (the laser range)
+  /// A robot is stalled when it stays within stall_distance [m] of one spot for stall_time [s]
+  /// while reachable unknown space remains (coverage < 0.99).
+  double stall_time = 60.0;
+  double stall_distance = 0.5;
+  double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
+  double goal_tolerance = 0.3;  ///< [m] a waypoint or goal counts as reached
+  double clearance = 0.1;       ///< [m] added to the body radius when planning paths
   /// [m] worlds with finer cells are resampled to cells of about this size (a coarse cell is
   /// occupied when any of its cells is); keeps 16-robot runs on 50 m maps fast.
   double min_cell_size = 0.1;
@@ -69,6 +94,17 @@ struct ExplorationFrame {
   double coverage = 0.0;     ///< 0..1
 };
 
+/// One tree dispatch of one robot: when, from where, the root it was sent through and its leaves.
+struct TreeDispatch {
+  double t = 0.0;  ///< [s]
+  int robot = 0;
+  bool first = true;         ///< the single dispatch of the first tree (else a re-plan)
+  Vec2 from;                 ///< the robot's position [m]
+  Vec2 root;                 ///< the root of the tree it was sent along [m]
+  std::vector<Vec2> leaves;  ///< its goals, in order [m]
+  std::vector<Vec2> route;   ///< waypoints to its first leaf [m]
+};
+
 struct ExplorationRecording {
   GridGeometry geometry;
   std::vector<Vec2> starts;
@@ -77,7 +113,12 @@ struct ExplorationRecording {
   VoronoiTree tree;                        ///< the first tree (kTree only)
   std::vector<std::vector<int>> dispatch;  ///< leaves per robot of the first tree
   std::vector<std::vector<Vec2>> routes;   ///< waypoints per robot of the first tree
+  double tree_time = -1.0;                 ///< [s] when the first tree was built (-1: never)
+  std::vector<TreeDispatch> dispatches;    ///< every tree dispatch, in time order
   OccupancyGrid team_map;                  ///< final merged map (ROS values)
+  /// [s] per cell (row-major, the recording's geometry): when the team map first knew the cell;
+  /// negative = never.
+  std::vector<float> reveal_time;
 };
 
 struct ExplorationResult {
@@ -91,14 +132,20 @@ struct ExplorationResult {
   int collisions = 0;           ///< refused steps (body would overlap a wall or a robot)
   double overlap = 0.0;         ///< sum of per-robot known cells / team known cells - 1
   int feature_points = 0;
-  int leaves = 0;  ///< leaves of the first tree (kTree)
-  int trees = 0;   ///< trees built (kTree)
+  int leaves = 0;          ///< leaves of the first tree (kTree)
+  int trees = 0;           ///< trees built (first dispatch and re-plans)
+  int dispatches = 0;      ///< robot dispatches along a tree (first + re-plans)
+  int leaves_reached = 0;  ///< dispatched leaves a robot actually reached
+  int frontier_goals = 0;  ///< frontier goals assigned (frontier methods, kTreeFrontier)
+  /// Robots that stayed within stall_distance of one spot for stall_time while coverage < 0.99.
+  int stalled_robots = 0;
+  /// Goals given up by the progress watchdog (no progress for stall_time / 3).
+  int watchdog_events = 0;
   std::size_t reachable_free_cells = 0;
   ExplorationRecording recording;
 };
 
 /// Runs one exploration. `world`: ground truth (>= 50 occupied; unknown counts as occupied),
-/// resampled to options.min_cell_size (the recording has the resampled geometry).
 /// resampled to options.min_cell_size; the recording's geometry is the resampled one.
 /// Throws voronav::Error for invalid options, an empty world, or a start that is not free.
 [[nodiscard]] ExplorationResult run_exploration(const OccupancyGrid& world,

@@ -10,6 +10,7 @@
 #include "voronav/core/cell_iterators.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/planning/astar.hpp"
+#include "voronav/planning/grid_planner.hpp"
 
 namespace voronav::exploration {
 namespace {
@@ -49,6 +50,10 @@ void VoronoiTreeOptions::validate() const {
     throw Error("VoronoiTreeOptions.max_detour_factor", 0, "expected a finite number >= 1");
   if (!(prune_leaf_shorter_than >= 0.0) || !std::isfinite(prune_leaf_shorter_than))
     throw Error("VoronoiTreeOptions.prune_leaf_shorter_than", 0, "expected a finite number >= 0");
+}
+
+BinaryGrid tree_grid(const OccupancyGrid& map, double radius) {
+  return planning::make_planning_grid(binarize(map, {50, false}), radius);
 }
 
 bool segment_free(const BinaryGrid& traversable, Vec2 a, Vec2 b) {
@@ -281,10 +286,13 @@ VoronoiTree build_voronoi_tree(const PointVoronoi& voronoi, const BinaryGrid& tr
 }
 
 std::vector<std::vector<int>> dispatch_leaves(const VoronoiTree& tree, int robots) {
+  return dispatch_leaves(tree.leaves_by_distance(), robots);
+}
+
+std::vector<std::vector<int>> dispatch_leaves(const std::vector<int>& leaves, int robots) {
   if (robots < 1)
     throw Error("dispatch_leaves", 0, "expected at least one robot, got " + std::to_string(robots));
   std::vector<std::vector<int>> out(static_cast<std::size_t>(robots));
-  const std::vector<int> leaves = tree.leaves_by_distance();
   if (leaves.empty()) return out;
   const std::size_t n = out.size(), l = leaves.size();
   if (n >= l) {

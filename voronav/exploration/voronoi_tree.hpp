@@ -56,12 +56,17 @@ struct VoronoiTree {
   [[nodiscard]] std::vector<Vec2> waypoints(int from, int to) const;
 };
 
+/// The grid seed 004's tree lives on: cells not known to be blocked (free or unknown, ROS values
+/// < 50) are passable; known obstacles are inflated by `radius` [m]. 1 = blocked, 0 = passable.
+[[nodiscard]] BinaryGrid tree_grid(const OccupancyGrid& map, double radius);
+
 /// True when every cell of the Bresenham line between the cells of a and b is free (0) in
 /// `traversable`.
 [[nodiscard]] bool segment_free(const BinaryGrid& traversable, Vec2 a, Vec2 b);
 
-/// Builds the tree from the Voronoi diagram. `traversable`: 1 = blocked or unknown (already
-/// inflated by the robot radius), 0 = known free; vertices on blocked cells are clipped away.
+/// Builds the tree from the Voronoi diagram. `traversable`: 1 = blocked (the explorer: known
+/// obstacles inflated by the robot radius), 0 = passable (the explorer: free or unknown);
+/// vertices on blocked cells or off the grid are clipped away.
 /// `start`: the robots' start [m]. Throws voronav::Error for a non-finite start or invalid options.
 [[nodiscard]] VoronoiTree build_voronoi_tree(const PointVoronoi& voronoi,
                                              const BinaryGrid& traversable, Vec2 start,
@@ -71,5 +76,8 @@ struct VoronoiTree {
 /// i, i + N, i + 2N, ... (N robots); with more robots than leaves, robot i takes leaf i mod L.
 /// Throws voronav::Error for robots < 1.
 [[nodiscard]] std::vector<std::vector<int>> dispatch_leaves(const VoronoiTree& tree, int robots);
+/// The same rule for an explicit leaf order (e.g. a filtered leaves_by_distance()).
+[[nodiscard]] std::vector<std::vector<int>> dispatch_leaves(const std::vector<int>& leaves,
+                                                            int robots);
 
 }  // namespace voronav::exploration
