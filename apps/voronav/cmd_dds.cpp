@@ -163,7 +163,7 @@ void setup_config(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--lease", a->o.lease_duration_s, "Participant lease duration [s]")
       ->capture_default_str();
-  cmd->add_option("--out", a->out, "Write to this file instead of stdout");
+  cmd->add_option("--out", a->out, "Write to this file instead of stdout")->check(output_file());
   cmd->callback([a] {
     dds::CycloneConfigOptions o = a->o;
     if (!a->peers.empty()) o.peers = a->peers;
