@@ -4,7 +4,8 @@
 # JPS and JPS+ speed-ups over A*, the JPS+ table build time, and A*/BFS. Then checks every query of
 # every map in data/movingai and ../shared/data/movingai with `voronav scen --planner jps|jps+`
 # (all queries, optimal lengths at the file's precision) and appends the mismatch counts.
-# Usage: bench/run_planning_bench.sh [build-dir]   (default build/default)
+# Usage: [VORONAV_MOVINGAI_DIR=/work/shared/data/movingai] bench/run_planning_bench.sh [build-dir]
+# (default build/default; the benchmark reads $VORONAV_MOVINGAI_DIR, else ../shared/data/movingai)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/default}
@@ -14,8 +15,9 @@ json=$(mktemp)
 checks=$(mktemp)
 "$build/bin/planning_bench" --benchmark_min_time=0.2 --benchmark_format=json >"$json"
 cli=$(find "$build" -name voronav -type f -perm -u+x | head -1)
-for label in data/movingai ../shared/data/movingai; do
-  dir="$root/$label"
+shared=${VORONAV_MOVINGAI_DIR:-$root/../shared/data/movingai}
+for dir in "$root/data/movingai" "$shared"; do
+  label=$([ "$dir" = "$root/data/movingai" ] && echo data/movingai || echo shared/data/movingai)
   [ -d "$dir" ] || continue
   for m in "$dir"/*.map; do
     [ -f "$m.scen" ] || continue
