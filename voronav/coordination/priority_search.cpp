@@ -471,18 +471,28 @@ class Ga {
         ++crossovers;
       }
       ++out.generations;
-      // Elitism: the best `elite` survive; the other places go to the best of the rest and the
-      // children, without duplicates.
-      std::vector<Individual> next(pop.begin(), pop.begin() + elite);
-      std::vector<Individual> pool(pop.begin() + elite, pop.end());
-      for (auto& ch : children)
-        pool.push_back(std::move(ch));
-      std::stable_sort(pool.begin(), pool.end(), by_quality);
-      for (auto& ind : pool) {
-        if (static_cast<int>(next.size()) >= pop_size) break;
-        const bool dup = std::any_of(next.begin(), next.end(),
-                                     [&](const Individual& x) { return x.seq == ind.seq; });
-        if (!dup) next.push_back(std::move(ind));
+      std::vector<Individual> next;
+      if (o_.truncation) {
+        // Plain truncation (before issue #16): the best of the old population and the children.
+        next.assign(pop.begin(), pop.begin() + elite);
+        std::vector<Individual> pool(pop.begin() + elite, pop.end());
+        for (auto& ch : children)
+          pool.push_back(std::move(ch));
+        std::stable_sort(pool.begin(), pool.end(), by_quality);
+        for (auto& ind : pool) {
+          if (static_cast<int>(next.size()) >= pop_size) break;
+          const bool dup = std::any_of(next.begin(), next.end(),
+                                       [&](const Individual& x) { return x.seq == ind.seq; });
+          if (!dup) next.push_back(std::move(ind));
+        }
+      } else {
+        // Elitism (section 4.2): the best `elite` survive unchanged; the children replace
+        // non-elite members chosen at random, whatever their quality.
+        next = std::move(pop);
+        for (auto& ch : children) {
+          if (elite >= pop_size) break;
+          next[static_cast<std::size_t>(uniform(elite, pop_size - 1))] = std::move(ch);
+        }
       }
       while (static_cast<int>(next.size()) < pop_size) {  // refill with random orders
         std::shuffle(base.begin(), base.end(), rng_);

@@ -67,9 +67,12 @@ struct GaOptions {
   double mutation_rate = 0.2;     ///< probability that a child is mutated
   int mutation_min_edges = 4;     ///< mutation removes a random number of edges in
   int mutation_max_edges = 7;     ///< [min, max] and reconnects greedily
-  double elitism = 0.2;           ///< fraction of the best orders always kept
-  double convergence = 1e-4;      ///< stop when the best makespan changes less (relative)
-  int max_rounds = 50;            ///< hard limit on rounds
+  double elitism = 0.2;           ///< fraction of the best orders always kept unchanged
+  /// false (default): children replace random non-elite members (the paper's elitism);
+  /// true: the population is the best of old and children (plain truncation, before issue #16).
+  bool truncation = false;
+  double convergence = 1e-4;  ///< stop when the best makespan changes less (relative)
+  int max_rounds = 50;        ///< hard limit on rounds
   /// Population size; 0 = the number of robots searched (the paper's "N random orders").
   int population = 0;
   /// 3-opt attempts per child; 0 = N (N - 1) as in the paper; < 0 disables 3-opt.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <queue>
 #include <string>
+#include <unordered_map>
 
 #include "voronav/core/error.hpp"
 
@@ -158,20 +159,11 @@ class Search {
  public:
   Search(const BinaryGrid& free, double radius, double v, const Reservations& res,
          const SippOptions& o)
-      : free_(free),
-        g_(free.geometry()),
-        radius_(radius),
-        v_(v),
-        res_(res),
-        o_(o),
-        safe_(g_.size()),
-        computed_(g_.size(), 0),
-        edge_bad_(8 * g_.size()),
-        edge_done_(8 * g_.size(), 0) {}
+      : free_(free), g_(free.geometry()), radius_(radius), v_(v), res_(res), o_(o), safe_() {}
 
   const std::vector<Interval>& safe(std::size_t cell) {
-    if (computed_[cell]) return safe_[cell];
-    computed_[cell] = 1;
+    // Tables are hashed by cell: a search touches few cells of a large map.
+    if (const auto it = safe_.find(cell); it != safe_.end()) return it->second;
     const Vec2 c = g_.cell_center(g_.cell_at(cell));
     std::vector<Interval> unsafe;
     for (const int id : res_.near(g_.cell_at(cell))) {
@@ -234,7 +226,7 @@ class Search {
     using Entry = std::pair<double, int>;  // f, node
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
     // best arrival per (cell, interval)
-    std::vector<std::vector<double>> best(g_.size());
+    std::unordered_map<std::size_t, std::vector<double>> best;
     auto push = [&](std::size_t cell, int iv, double g, int parent) {
       auto& b = best[cell];
       if (b.size() <= static_cast<std::size_t>(iv))
@@ -309,11 +301,9 @@ class Search {
         const std::size_t qi = g_.index(q);
         const double tau = distance(pc, g_.cell_center(q)) / v_;
         const std::size_t ek = n.cell * 8 + static_cast<std::size_t>(d);
-        if (!edge_done_[ek]) {
-          edge_bad_[ek] = bad(n.cell, qi);
-          edge_done_[ek] = 1;
-        }
-        const auto& bads = edge_bad_[ek];
+        auto eit = edge_bad_.find(ek);
+        if (eit == edge_bad_.end()) eit = edge_bad_.emplace(ek, bad(n.cell, qi)).first;
+        const auto& bads = eit->second;
         const auto& targets = safe(qi);
         for (std::size_t k = 0; k < targets.size(); ++k) {
           const double lo = std::max(n.g, targets[k].first - tau);
@@ -346,10 +336,8 @@ class Search {
   double radius_, v_;
   const Reservations& res_;
   const SippOptions& o_;
-  std::vector<std::vector<Interval>> safe_;
-  std::vector<char> computed_;
-  std::vector<std::vector<Interval>> edge_bad_;  // per (cell, direction), computed once
-  std::vector<char> edge_done_;
+  std::unordered_map<std::size_t, std::vector<Interval>> safe_;
+  std::unordered_map<std::size_t, std::vector<Interval>> edge_bad_;  // per (cell, direction)
   std::vector<unsigned> seen_;
   unsigned stamp_ = 0;
 };
