@@ -2,7 +2,8 @@
 # Reproduces the seed-003 figures of docs/reproductions/topology.md and writes
 # bench/results/topology.md:
 #  1. room segmentation of every floor plan in data/floorplans against its *_gt_segmentation.png
-#     (recall, precision, regions, time) with both diagrams (edt, ca), via `voronav topo --json`;
+#     (recall, precision with --metric ipa and --metric intersection, regions, time) with both
+#     diagrams (edt, ca), via `voronav topo --json`;
 #  2. bench/topology_bench.cpp: full build ns/cell on willow (or the bundled depot map) and the
 #     incremental 3x3 update, as ratios against the EDT measured in the same run.
 # Usage: bench/topology_eval.sh [build-dir]   (default build/default)
@@ -19,10 +20,12 @@ for png in "$root"/data/floorplans/*.png; do
   gt="$root/data/floorplans/${name%_furnitures}_gt_segmentation.png"
   [ -f "$gt" ] || continue
   for method in edt ca; do
-    "$build/bin/voronav" topo --map "$png" --ground-truth "$gt" --method "$method" --json \
-      >"$tmp/$name.$method.json"
+    for metric in ipa intersection; do
+      "$build/bin/voronav" topo --map "$png" --ground-truth "$gt" --method "$method" \
+        --metric "$metric" --json >"$tmp/$name.$method.$metric.json"
+    done
   done
 done
 "$build/bin/topology_bench" --benchmark_min_time=0.2 --benchmark_format=json >"$tmp/bench.json"
-python3 "$root/bench/topology_eval.py" "$tmp" "$root/bench/results/topology.md"
+/usr/bin/python3 "$root/bench/topology_eval.py" "$tmp" "$root/bench/results/topology.md"
 cat "$root/bench/results/topology.md"

@@ -42,6 +42,46 @@ def case_topo_edt():
     check(s["rooms"] >= 20, str(s))
 
 
+def read_pgm16(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    parts = data.split(b"\n", 3)
+    check(parts[0] == b"P5" and parts[2] == b"65535", "16-bit P5 header")
+    w, h = (int(v) for v in parts[1].split())
+    px = parts[3]
+    check(len(px) == 2 * w * h, "pixel data size")
+    return w, h, [(px[2 * i] << 8) | px[2 * i + 1] for i in range(w * h)]
+
+
+def ring_area(ring):
+    return 0.5 * sum(ring[i][0] * ring[(i + 1) % len(ring)][1] -
+                     ring[(i + 1) % len(ring)][0] * ring[i][1] for i in range(len(ring)))
+
+
+def case_topo_labels():
+    with tempfile.TemporaryDirectory() as out:
+        labels = os.path.join(out, "labels.pgm")
+        run("topo", "--map", os.path.join(PLANS, "office_a.png"), "--labels", labels, "--out", out)
+        with open(os.path.join(out, "topology.json")) as f:
+            j = json.load(f)
+        w, h, px = read_pgm16(labels)
+        check((w, h) == (j["width"], j["height"]), f"{w}x{h} vs map {j['width']}x{j['height']}")
+        counts = {}
+        for v in px:
+            counts[v] = counts.get(v, 0) + 1
+        res2 = j["resolution"] ** 2
+        nodes = j["graph"]["nodes"]
+        check(len(nodes) == j["regions"] and len(nodes) > 5, "regions")
+        check(set(counts) - {0} == {n["label"] for n in nodes}, "label values = region ids + 1")
+        for n in nodes:
+            check(counts[n["label"]] == n["cells"], f"region {n['id']}: {counts[n['label']]} px "
+                  f"in the image, {n['cells']} in topology.json")
+            check(abs(counts[n["label"]] * res2 - n["area_m2"]) < 1e-6, "area")
+            poly = sum(ring_area(r) for r in n["polygon"])
+            check(abs(poly - n["area_m2"]) < 1e-6, f"polygon area {poly} vs {n['area_m2']}")
+            check(n["area_m2"] >= 1.0, f"region {n['id']} under --min-region-area: {n['area_m2']}")
+
+
 def case_topo_ca():
     j = topo("office_b", "ca")
     s = j["segmentation"]
@@ -75,9 +115,16 @@ def case_errors():
     check("missing.png" in p.stderr, p.stderr)
     p = run("map", "--map", TB3, "--sensor", "radar", expect=2)
     check("--sensor" in p.stderr, p.stderr)
+    p = run("topo", "--map", os.path.join(PLANS, "office_a.png"), "--metric", "iou", expect=2)
+    check("--metric" in p.stderr and "iou" in p.stderr, p.stderr)
+    p = run("topo", "--map", os.path.join(PLANS, "office_a.png"), "--labels", "/tmp/x.jpg",
+            expect=2)
+    check("x.jpg" in p.stderr and ".png" in p.stderr, p.stderr)
+    # A ground truth of another size is scaled to the map with a notice.
     p = run("topo", "--map", os.path.join(PLANS, "office_a.png"), "--ground-truth",
-            os.path.join(PLANS, "lab_ipa_gt_segmentation.png"), expect=2)
-    check("differs in size" in p.stderr, p.stderr)
+            os.path.join(PLANS, "lab_ipa_gt_segmentation.png"), "--json")
+    check("scaled" in p.stderr, p.stderr)
+    check(json.loads(p.stdout)["ground_truth_scaled_from"] == [864, 768], p.stdout[:200])
 
 
 globals()["case_" + CASE]()
