@@ -278,7 +278,7 @@ test("netsim (in process)", async () => {
   near(robots[0].position.y, 1.7, 1e-9, "source robot at its scenario position");
   assert.equal(topics["/tf"][0].msg.transforms[9].child_frame_id, "robot_9/base_link");
   const route = topics["/plan"][0].msg;
-  assert.ok(topics["/events"].some((e) => JSON.parse(e.msg.data).event === "route_found"));
+  assert.ok(topics["/events"].some((e) => ["route_found", "route"].includes(JSON.parse(e.msg.data).event)));
   near(route.poses.at(-1).pose.position.x, 38.5, 0.5, "route ends at the destination");
   const arrows = topics["/messages"].flatMap((m) => m.msg.markers);
   assert.ok(arrows.length > 0 && arrows.every((a) => a.type === 0 && a.points.length === 2));

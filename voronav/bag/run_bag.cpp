@@ -148,6 +148,12 @@ std::map<std::string, std::size_t> write_run_bag(const report::Recording& rec,
                                                  const McapOptions& options) {
   RosBagWriter bag(file, options);
   const double t0 = rec.start_time();
+  // The recording's own events (route, change, repair, kill, arrival) when it has them; else
+  // events derived from its paths and obstacle changes.
+  const bool derive_events = rec.events.empty();
+  for (const auto& e : rec.events)
+    bag.write("/events", e.t,
+              ros::StringMsg{event_json(e.t, e.kind, {{"detail", e.text}, {"robot", e.robot}})});
 
   // /map: the static map, then the map after each obstacle change.
   if (!rec.map.empty()) {
@@ -160,9 +166,10 @@ std::map<std::string, std::size_t> write_run_bag(const report::Recording& rec,
       for (const Cell cell : c.cells)
         if (map.contains(cell)) map[cell] = c.value;
       bag.write("/map", c.t, ros::OccupancyGridMsg::from(map, ros::Time::from_seconds(c.t)));
-      bag.write("/events", c.t,
-                ros::StringMsg{event_json(c.t, "obstacle_change",
-                                          {{"cells", c.cells.size()}, {"value", c.value}})});
+      if (derive_events)
+        bag.write("/events", c.t,
+                  ros::StringMsg{event_json(c.t, "obstacle_change",
+                                            {{"cells", c.cells.size()}, {"value", c.value}})});
     }
   }
   for (const auto& [t, m] : extras.known_maps)
@@ -174,10 +181,11 @@ std::map<std::string, std::size_t> write_run_bag(const report::Recording& rec,
     const ros::PathMsg m = path_msg(p);
     bag.write("/robot_" + std::to_string(p.robot) + "/plan", p.t_start, m);
     if (rec.robots.size() <= 1 || p.label == "route") bag.write("/plan", p.t_start, m);
-    bag.write("/events", p.t_start,
-              ros::StringMsg{event_json(
-                  p.t_start, p.label == "route" ? "route_found" : "path",
-                  {{"robot", p.robot}, {"label", p.label}, {"points", p.points.size()}})});
+    if (derive_events)
+      bag.write("/events", p.t_start,
+                ros::StringMsg{event_json(
+                    p.t_start, p.label == "route" ? "route_found" : "path",
+                    {{"robot", p.robot}, {"label", p.label}, {"points", p.points.size()}})});
   }
 
   // /tf and /robots at every track sample time (thinned evenly).
