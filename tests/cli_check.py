@@ -215,6 +215,10 @@ def case_demo():
         co = summary["coordination"]
         check(co["valid"] is True and co["status"] == "ok", str(co))
         check(co["makespan_s"] >= max(a["arrival_s"] for a in co["agents"]) - 1e-9, str(co))
+        # Priorities matter in the demo's team: some robots wait, and the searched order is no
+        # worse than the id order.
+        check(co["nonzero_delays"] >= 1 and any(a["delay_s"] > 0 for a in co["agents"]), str(co))
+        check(co["makespan_s"] <= co["default_order_makespan_s"] + 1e-9, str(co))
         check(summary["networked"]["success"] is True, str(summary["networked"]))
         dds = summary["networked_dds"]
         check(dds["ok"] and dds["same_as_in_process"], f"the DDS run equals the in-process one: {dds}")
