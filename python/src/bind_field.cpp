@@ -350,7 +350,8 @@ void bind_field(py::module_& m) {
                         py::arg("rooms") = s.rooms, py::arg("regions") = s.regions);
       },
       py::arg("regions"), py::arg("rooms"), py::arg("min_room_cells") = 0);
-  tp.def("free_components", &topology::free_components, py::arg("blocked"));
+  tp.def("free_components", &topology::free_components, py::arg("blocked"),
+         py::arg("eight") = false, "Connected free areas (4- or 8-connected), labels 0.. (-1 blocked).");
 }
 
 }  // namespace voronav::python
