@@ -72,7 +72,7 @@ struct PySchedule {
   std::vector<co::Agent> agents;
   co::CollisionMapOptions map;
   [[nodiscard]] co::Schedule schedule() const {
-    return {agents, r.delays, map.at_start, map.at_goal, r.valid};
+    return {agents, r.delays, map.at_start, map.at_goal, r.valid, {}, {}};
   }
 };
 
