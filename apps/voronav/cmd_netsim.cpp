@@ -137,14 +137,10 @@ nlohmann::json mechanism_json(const std::vector<sim::NetSimMetrics>& runs) {
     }
   }
   const double n = std::max(ok, 1);
-  return {{"route_found_by", by},
-          {"paths_lost", lost},
-          {"repairs_executed", repairs},
-          {"change_runs", change_runs},
-          {"change_runs_on_route", hit},
-          {"route_length_m", route / n},
-          {"source_travel_m", source / n},
-          {"relay_travel_m", relay / n}};
+  return {{"route_found_by", by},          {"paths_lost", lost},
+          {"repairs_executed", repairs},   {"change_runs", change_runs},
+          {"change_runs_on_route", hit},   {"route_length_m", route / n},
+          {"source_travel_m", source / n}, {"relay_travel_m", relay / n}};
 }
 
 std::vector<sim::Method> methods_of(const std::string& method) {

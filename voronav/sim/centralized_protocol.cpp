@@ -119,5 +119,4 @@ void RobotAgent::check_central_path() {
   }
 }
 
-
 }  // namespace voronav::sim

@@ -11,7 +11,6 @@
 #include <set>
 
 #include "voronav/core/error.hpp"
-#define VORONAV_NS_TRACE
 #include "voronav/sim/agent_internal.hpp"
 #include "voronav/sim/robot_agent.hpp"
 
@@ -39,7 +38,8 @@ std::optional<Vec2> RobotAgent::neighbour_position(RobotId id) {
 }
 
 // ---- delivery ----------------------------------------------------------------------------------
-void RobotAgent::deliver_path(PathMessage p, RobotId to, Vec2 toward, bool carrier) {
+void RobotAgent::deliver_path(PathMessage p, RobotId to, Vec2 toward,
+                              [[maybe_unused]] bool carrier) {
   auto& r = r_;
   NS_DEBUG("t=%.1f robot %u delivers path to %u (in range %d, carrier %d)\n", now_, r.id.value,
            to.value, neighbour_position(to) ? 1 : 0, carrier ? 1 : 0);
@@ -66,12 +66,14 @@ void RobotAgent::deliver_path(PathMessage p, RobotId to, Vec2 toward, bool carri
     send_reliable(best, p);
     return;
   }
-  if (!carrier && !r.pending) {
-    // The holder walks back toward the relay until it is in range (pending_step).
+  if (!r.pending) {
+    // The holder (or carrier) walks back toward the relay until it is in range (pending_step).
     r.pending = p;
     r.pending_since = now_;
     return;
   }
+  NS_DEBUG("t=%.1f robot %u loses a path (already holds one, carrier %d)\n", now_, r.id.value,
+           carrier ? 1 : 0);
   ++report_.paths_lost;
 }
 
@@ -240,8 +242,8 @@ void RobotAgent::finish_route(const PathMessage& p, bool own_answer) {
   double best = kInf;
   for (std::size_t j = 0; j < w.size(); ++j) {
     const double c = distance(s.pos, w[j].position) + rest[j];
-    if (c < best && (distance(s.pos, w[j].position) < 1e-6 ||
-                     segment_known_free(s.pos, w[j].position))) {
+    if (c < best &&
+        (distance(s.pos, w[j].position) < 1e-6 || segment_known_free(s.pos, w[j].position))) {
       best = c;
       join = j;
     }

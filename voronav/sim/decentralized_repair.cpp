@@ -217,6 +217,12 @@ void RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole) {
 void RobotAgent::check_source_route() {
   auto& s = r_;
   if (route_.empty()) return;
+  if (s.wp < back_steps_) {
+    // Still on a planned way to the route (its own map): check what it drives, plan again if
+    // that is blocked.
+    if (walk_blocked() && !replan_to_route()) blocked_since_ = now_;
+    return;
+  }
   // Only the part within sensing range matters; find_break checks the remaining route.
   std::vector<VoronoiPoint> rest{VoronoiPoint{s.pos, 1.0f, 0.0f}};
   const std::size_t next = next_route_index();
@@ -226,6 +232,8 @@ void RobotAgent::check_source_route() {
   const auto br = find_break(rest, 0);
   if (!br) return;
   if (blocked_since_ < 0.0) blocked_since_ = now_;
+  NS_DEBUG("t=%.1f source blocked at (%.1f,%.1f), break %u-%u of %zu\n", now_, s.pos.x, s.pos.y,
+           br->first, br->second, rest.size());
   ++report_.repairs;
   shrink_to_map(rest);  // as in check_relay_route
   auto fixed = detour(rest, br->first, br->second);
@@ -249,5 +257,26 @@ void RobotAgent::check_source_route() {
   broadcast(m, 1);
 }
 
+/// Source, when no Repair answered in time: A* on its own map to the first route point past the
+/// break that it can plan to, then the rest of the route.
+bool RobotAgent::replan_to_route() {
+  auto& s = r_;
+  const std::size_t next = next_route_index();
+  for (std::size_t i = std::max<std::size_t>(next, 1) + 1; i < route_.size(); ++i) {
+    if (!plan_walk(route_[i].position)) continue;
+    ++report_.replans;
+    auto prefix = s.waypoints;
+    route_.erase(route_.begin() + 1, route_.begin() + static_cast<std::ptrdiff_t>(i));
+    route_[0] = VoronoiPoint{s.pos, 1.0f, 0.0f};
+    for (std::size_t k = 2; k < route_.size(); ++k)
+      prefix.push_back(route_[k].position);
+    s.waypoints = std::move(prefix);
+    s.wp = 0;
+    back_steps_ = s.waypoints.size() - (route_.size() - 1);
+    route_base_ = 1;
+    return true;
+  }
+  return false;
+}
 
 }  // namespace voronav::sim

@@ -8,7 +8,6 @@
 #include <cmath>
 
 #include "voronav/core/error.hpp"
-#define VORONAV_NS_TRACE
 #include "voronav/sim/agent_internal.hpp"
 #include "voronav/sim/robot_agent.hpp"
 
@@ -235,8 +234,8 @@ void RobotAgent::on(const Header& h, const SearchMessage& m) {
   if (r.walk == Walk::kDestination || r.path_forwarded || (r.saved && r.saved->num == m.num))
     return;
   const Vec2 spos = neighbour_position(h.sender).value_or(r.pos);
-  r.s_senders.push_back({h.sender, spos, m.relays, r.s_in.open_points.size(),
-                         m.open_points.size()});
+  r.s_senders.push_back(
+      {h.sender, spos, m.relays, r.s_in.open_points.size(), m.open_points.size()});
   r.s_in.open_points.insert(r.s_in.open_points.end(), m.open_points.begin(), m.open_points.end());
   if (r.s_done) {
     // Already forwarded: re-forward when the costs improve (distributed shortest path), at most

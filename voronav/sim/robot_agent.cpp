@@ -165,7 +165,6 @@ void RobotAgent::world_changed(double now_s, Vec2 lo, Vec2 hi) {
   if (last_sense_changed_) on_map_changed();
 }
 
-
 void RobotAgent::do_sense() {
   const auto s = sense(*ctx_.truth, r_.pos, opt().sensing_range_m, r_.map);
   report_.metrics.work += s.cells;
@@ -275,10 +274,14 @@ void RobotAgent::timers() {
       retry_search();
     if (!route_.empty() && blocked_since_ >= 0.0 &&
         now_ - blocked_since_ >= opt().repair_timeout_s) {
-      route_.clear();
-      r_.waypoints.clear();
       blocked_since_ = -1.0;
-      start_search();
+      // No Repair answer: the source plans a way on its own map to the first route point past
+      // the break (counted in replans); only when there is none it starts a new Search.
+      if (!replan_to_route()) {
+        route_.clear();
+        r_.waypoints.clear();
+        start_search();
+      }
     }
   } else if (is_source() && collecting_ && now_ - last_ack_ >= opt().collect_s) {
     collecting_ = false;
@@ -309,6 +312,7 @@ void RobotAgent::move(double now_s) {
   if (r.wp >= r.waypoints.size()) return;
   if (is_source() && blocked_since_ >= 0.0) return;  // waiting for a repair
   holding_ = true;
+  walk_prev = r.pos;
   double budget = opt().speed_mps * opt().dt_s;
   double moved = 0.0;
   while (budget > 1e-12 && r.wp < r.waypoints.size()) {
@@ -327,9 +331,18 @@ void RobotAgent::move(double now_s) {
   }
   report_.metrics.travel_m += moved;
   if (is_source() && moved > 0.0) trail_.push_back(r.pos);
-  if (!is_source() && (r.walk == Walk::kBridge || r.walk == Walk::kDestination) &&
-      (r.walk_trail.empty() || distance(r.walk_trail.back(), r.pos) >= 1.0))
-    r.walk_trail.push_back(r.pos);
+  if (!is_source() && (r.walk == Walk::kBridge || r.walk == Walk::kDestination)) {
+    // Trail points every 2 m, and before any corner: each straight step between two of them is
+    // known free (the robot drove it and sensed around it).
+    if (r.walk_trail.empty()) {
+      r.walk_trail.push_back(r.pos);
+    } else if (distance(r.walk_trail.back(), r.pos) >= 2.0 ||
+               !segment_known_free(r.walk_trail.back(), r.pos)) {
+      if (distance(r.walk_trail.back(), walk_prev) > 1e-6) r.walk_trail.push_back(walk_prev);
+      if (!segment_known_free(r.walk_trail.back(), r.pos)) r.walk_trail.clear();
+      r.walk_trail.push_back(r.pos);
+    }
+  }
   do_sense();
   const bool changed = last_sense_changed_;
   if (is_source() && r.wp >= r.waypoints.size() && distance(r.pos, scen().destination) < 0.35) {

@@ -231,6 +231,7 @@ class RobotAgent {
   void on_repair_path(network::PathMessage m);
   void splice_route(const std::vector<network::VoronoiPoint>& whole);
   void check_source_route();
+  bool replan_to_route();
   [[nodiscard]] std::uint32_t next_repair_num();
   // centralized baseline
   void start_request();
@@ -259,6 +260,7 @@ class RobotAgent {
   std::vector<Vec2> trail_;     // source positions since its latest Search
   std::size_t back_steps_ = 0;  // waypoints of the way back along the trail
   double blocked_since_ = -1.0;
+  Vec2 walk_prev;  // position before this step's move
   std::uint32_t repair_seq_ = 0;
   bool collecting_ = false;
   double last_ack_ = 0.0;

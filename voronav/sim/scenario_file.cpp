@@ -425,8 +425,7 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
       out << "  - at_s: " << fmt(ch.at_s) << "\n";
     else
       out << "  - after_route_s: " << fmt(ch.after_route_s) << "\n";
-    out
-        << "    value: " << (ch.value == kFree ? "free" : "occupied") << "\n"
+    out << "    value: " << (ch.value == kFree ? "free" : "occupied") << "\n"
         << "    cells: [";
     for (std::size_t i = 0; i < ch.cells.size(); ++i)
       out << (i ? ", " : "") << "[" << ch.cells[i].x << ", " << ch.cells[i].y << "]";

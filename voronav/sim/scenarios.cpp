@@ -215,36 +215,44 @@ void time_changes_on_routes(const OfficeWorld& world, NetSimScenario& sc, int ch
   const BinaryGrid truth = binarize(world.grid);
   BinaryGrid changed = truth;
   const auto dest = g.world_to_cell(sc.destination);
-  const double end = std::min(pc.end_s, pd.end_s) - 1.0;
-  double t = std::ceil((std::max(pc.route_s, pd.route_s) + 1.0) * 2.0) / 2.0;
-  for (int k = 0; k < changes && t <= end; ++k) {
-    bool made = false;
-    for (; t <= end && !made; t += 0.5) {
-      for (const auto& d : world.doors) {
-        bool used = false;
-        for (const auto& ch : sc.changes)
-          used |= ch.cells == d.cells;
-        if (used) continue;
-        const auto a = ahead_on(pc, t, d.centre, 4.0), b = ahead_on(pd, t, d.centre, 4.0);
-        if (!a || !b) continue;
-        BinaryGrid trial = changed;
-        for (Cell c : d.cells)
-          trial[c] = 1;
-        const auto pg = planning::make_planning_grid(trial, robot_radius_m + 0.1);
-        const auto ca = g.world_to_cell(*a), cb = g.world_to_cell(*b);
-        if (!ca || !cb || !dest || pg[*ca] || pg[*cb] || !truth_plan(pg, *ca, *dest).ok() ||
-            !truth_plan(pg, *cb, *dest).ok())
-          continue;
-        changed = std::move(trial);
-        ObstacleChange ch;
-        ch.at_s = t;
-        ch.cells = d.cells;
-        sc.changes.push_back(std::move(ch));
-        made = true;
-        break;
+  // Pass 0: while both routes are in use. Pass 1 (only when pass 0 finds nothing, e.g. the
+  // centralized source arrives before the decentralized one has its route): while the
+  // decentralized route is in use, at a door that also lies on the centralized route.
+  for (int pass = 0; pass < 2 && sc.changes.empty(); ++pass) {
+    const double end = (pass == 0 ? std::min(pc.end_s, pd.end_s) : pd.end_s) - 1.0;
+    double t =
+        std::ceil(((pass == 0 ? std::max(pc.route_s, pd.route_s) : pd.route_s) + 1.0) * 2.0) / 2.0;
+    for (int k = 0; k < changes && t <= end; ++k) {
+      bool made = false;
+      for (; t <= end && !made; t += 0.5) {
+        for (const auto& d : world.doors) {
+          bool used = false;
+          for (const auto& ch : sc.changes)
+            used |= ch.cells == d.cells;
+          if (used) continue;
+          const auto a =
+              pass == 0 ? ahead_on(pc, t, d.centre, 4.0) : ahead_on(pc, 0.0, d.centre, 0.0);
+          const auto b = ahead_on(pd, t, d.centre, 4.0);
+          if (!a || !b) continue;
+          BinaryGrid trial = changed;
+          for (Cell c : d.cells)
+            trial[c] = 1;
+          const auto pg = planning::make_planning_grid(trial, robot_radius_m + 0.1);
+          const auto ca = g.world_to_cell(*a), cb = g.world_to_cell(*b);
+          if (!ca || !cb || !dest || pg[*ca] || pg[*cb] || !truth_plan(pg, *ca, *dest).ok() ||
+              !truth_plan(pg, *cb, *dest).ok())
+            continue;
+          changed = std::move(trial);
+          ObstacleChange ch;
+          ch.at_s = t;
+          ch.cells = d.cells;
+          sc.changes.push_back(std::move(ch));
+          made = true;
+          break;
+        }
       }
+      if (!sc.changes.empty()) t = std::max(t, sc.changes.back().at_s + every_s);
     }
-    t = std::max(t, sc.changes.empty() ? t : sc.changes.back().at_s + every_s);
   }
 }
 
