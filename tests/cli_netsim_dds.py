@@ -77,7 +77,6 @@ def case_killed_relay():
     r = per_run("--scenario", CORRIDOR, "--method", "decentralized", "--transport", "dds",
                 "--kill-robot", "5", "--kill-at-step", "20")[0]
     check(r["dead_robots"] == [5], f"the world declared robot 5 dead: {r['dead_robots']}")
-    check(r["robots"][6]["sent"].get("path", 0) > 1, "robot 6 retried its Path to the dead relay")
     # The Path that died with robot 5 is counted, never dropped silently (issue #13). A retry
     # continues the same search, which does not rebuild a Path lost at a dead relay: the run
     # either succeeds or reports the loss.
