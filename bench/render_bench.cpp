@@ -28,7 +28,7 @@ void BM_RenderPng(benchmark::State& state) {
   const auto out = std::filesystem::temp_directory_path() /
                    ("voronav_render_bench_" + std::to_string(::getpid()) + ".png");
   for (auto _ : state) {
-    render::Figure fig(map.geometry(), {.pixels_per_cell = 1.0});
+    render::Figure fig(map.geometry(), {.pixels_per_cell = 1.0, .title = "render bench"});
     fig.occupancy(map);
     fig.path(path, render::colors::kBlue);
     fig.save(out);

@@ -41,7 +41,7 @@ void draw_trajectories(const co::Scenario& sc, const std::vector<co::Agent>& age
                        const std::filesystem::path& file) {
   if (!sc.map) return;
   render::FigureOptions fo;
-  fo.title = "paths (numbers: robot id)";
+  fo.title = "paths (numbers: robot id; disc: start, dot: goal)";
   render::Figure fig(sc.map->grid.geometry(), fo);
   fig.occupancy(sc.map->grid);
   for (std::size_t i = 0; i < agents.size(); ++i) {
@@ -63,6 +63,7 @@ void draw_network(const co::MdNetwork& net, const co::CoordinationResult& r,
   render::FigureOptions fo;
   fo.pixels_per_cell = 8;
   fo.title = "(M,D) network of the chosen order after resolution (arc: M/D)";
+  fo.scale_unit = "";  // a diagram, not a map
   render::Figure fig(g, fo);
   std::vector<Vec2> pos(static_cast<std::size_t>(n));
   std::vector<int> rank(static_cast<std::size_t>(n));

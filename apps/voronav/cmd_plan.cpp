@@ -7,6 +7,7 @@
 #include "command.hpp"
 #include "plan_picture.hpp"
 #include "plan_ras.hpp"
+#include "voronav/planning/failure_hint.hpp"
 #include "voronav/planning/planner_factory.hpp"
 #include "voronav/topology/topo_planner.hpp"
 
@@ -44,6 +45,14 @@ void run(const PlanArgs& a) {
   const auto* ras = dynamic_cast<const planning::RasPlanner*>(planner.get());
 
   const double res = ctx.map.grid.resolution();
+  // A start or goal within the radius of a wall, or a door too narrow for the radius: say so.
+  const planning::FailureHint hint =
+      r.status == planning::PlanStatus::kStartOccupied ||
+              r.status == planning::PlanStatus::kGoalOccupied ||
+              r.status == planning::PlanStatus::kUnreachable
+          ? planning::explain_failure(binarize(ctx.map.grid), ctx.map.grid.geometry(), start, goal,
+                                      a.radius)
+          : planning::FailureHint{};
   if (!a.png.empty() || !a.svg.empty()) {
     PlanPicture pic{ctx.map.grid, grid, start, goal, &r, a.radius > 0};
     for (const auto& out : {a.png, a.svg}) {
@@ -51,7 +60,8 @@ void run(const PlanArgs& a) {
       if (ras != nullptr) {
         save_ras_picture(pic, *ras, out);
       } else {
-        save_plan_picture(pic, out);
+        save_plan_picture(pic, out, std::string(planner->name()),
+                          ctx.map.format == io::MapFormat::kMovingAi ? "cells" : "m");
       }
     }
   }
@@ -72,6 +82,7 @@ void run(const PlanArgs& a) {
                        {"path", path},
                        {"path_world", world}};
     if (ras != nullptr) add_ras_json(out, *ras, ctx);
+    if (!hint.text.empty()) out["hint"] = hint.text;
     print_json(out);
   } else {
     std::cout << "status:   " << planning::to_string(r.status) << "\n";
@@ -84,6 +95,7 @@ void run(const PlanArgs& a) {
     std::cout << "expanded: " << r.expanded << "\n"
               << "time:     " << r.time_ms << " ms\n";
   }
+  if (!hint.text.empty() && !a.json) std::cout << "hint:     " << hint.text << "\n";
   if (!r.ok()) exit_code() = 1;
 }
 

@@ -1,11 +1,29 @@
 #include "plan_picture.hpp"
 
+#include <cstdio>
+#include <string>
+
 #include "voronav/render/figure.hpp"
 
 namespace voronav::cli {
 
-void save_plan_picture(const PlanPicture& pic, const std::filesystem::path& out) {
-  render::Figure fig(pic.map.geometry(), {.crop = render::known_bounds(pic.map)});
+std::string plan_summary(const PlanPicture& pic, const std::string& unit) {
+  char buf[160];
+  if (pic.result == nullptr) return "planning query";
+  if (!pic.result->ok())
+    return std::string("no path: ") + std::string(planning::to_string(pic.result->status));
+  const double res = unit == "m" ? pic.map.resolution() : 1.0;
+  std::snprintf(buf, sizeof buf, "path of %.2f %s, %zu cells expanded",
+                pic.result->length_cells * res, unit.c_str(), pic.result->expanded);
+  return buf;
+}
+
+void save_plan_picture(const PlanPicture& pic, const std::filesystem::path& out,
+                       const std::string& title, const std::string& scale_unit) {
+  const std::string summary = plan_summary(pic, scale_unit);
+  render::Figure fig(pic.map.geometry(), {.title = title.empty() ? summary : title + ": " + summary,
+                                          .crop = render::known_bounds(pic.map),
+                                          .scale_unit = scale_unit});
   fig.occupancy(pic.map);
   if (pic.show_inflation) {
     // Cells blocked only by the robot radius, in light red.

@@ -16,6 +16,9 @@ struct PlanPicture {
   bool show_inflation = false;
 };
 
-void save_plan_picture(const PlanPicture& pic, const std::filesystem::path& out);
+/// `title`: empty = "path of L m (N cells expanded)" or the failure; `scale_unit`: "m", or
+/// "cells" for Moving AI maps.
+void save_plan_picture(const PlanPicture& pic, const std::filesystem::path& out,
+                       const std::string& title = "", const std::string& scale_unit = "m");
 
 }  // namespace voronav::cli

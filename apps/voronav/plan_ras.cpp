@@ -116,6 +116,7 @@ void save_ras_picture(const PlanPicture& pic, const planning::RasPlanner& ras,
     }
   }
   fig.scalar(step, 0.0, std::max(1, f.steps() - 1), 0.45);
+  fig.colorbar(0.0, std::max(1, f.steps() - 1), "numbering step");
   fig.binary(rejected, render::Color::hex(0xff7f0e, 0.55));
   // Region borders and ids when regions are large enough on screen (figure 2 style).
   const double region_px = fig.pixels_per_cell() * rs;

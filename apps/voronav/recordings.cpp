@@ -6,6 +6,13 @@
 #include <string>
 
 namespace voronav::cli {
+namespace {
+std::string format_seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f s", s);
+  return buf;
+}
+}  // namespace
 
 void add_topology_layers(report::Recording& rec, const topology::TopologicalMap& topo,
                          bool visible) {
@@ -54,6 +61,16 @@ void add_schedule_tracks(report::Recording& rec, const std::vector<coordination:
       if (tt >= end) break;
     }
     rec.paths.push_back({a.id, 0.0, "planned path", a.path.nodes()});
+    if (!a.path.nodes().empty())
+      rec.markers.push_back(
+          {"goal", a.path.nodes().back(), a.id, "goal of robot " + std::to_string(a.id)});
+    if (delay > 0.0)
+      rec.events.push_back(
+          {delay, "start",
+           "robot " + std::to_string(a.id) + " starts after waiting " + format_seconds(delay),
+           a.id});
+    rec.events.push_back({delay + a.path.travel_time(), "arrival",
+                          "robot " + std::to_string(a.id) + " reaches its goal", a.id});
     rec.robots.push_back(std::move(track));
   }
 }
@@ -90,8 +107,18 @@ report::Recording netsim_recording(const sim::NetSimScenario& sc, const sim::Net
   rec.description = std::to_string(sc.robots.size()) + " robots with 3 m sensing and a " +
                     std::to_string(static_cast<int>(radio_range_m)) + " m radio; robot " +
                     std::to_string(sc.source) +
-                    " (the source) needs a route to the destination. Lines between robots are "
-                    "messages; the obstacle change happens while the route is in use.";
+                    " (the source) needs a route to the destination (the star). Lines between "
+                    "robots are messages.";
+  if (m.route_time_s >= 0)
+    rec.description += " The route was found after " + format_seconds(m.route_time_s) + ".";
+  else
+    rec.description += " No route was found.";
+  if (!sc.changes.empty() && m.route_time_s >= 0)
+    rec.description += " " + std::to_string(sc.changes.size()) + " obstacle change" +
+                       (sc.changes.size() == 1 ? "" : "s") + " (orange); " +
+                       std::to_string(m.repairs) + " repair" + (m.repairs == 1 ? "" : "s") + ".";
+  if (m.arrival_time_s >= 0)
+    rec.description += " The source arrives at " + format_seconds(m.arrival_time_s) + ".";
   rec.map = sc.world;
   rec.message_display_s = 0.6;
   for (std::size_t r = 0; r < sc.robots.size(); ++r) {
@@ -138,6 +165,19 @@ report::Recording netsim_recording(const sim::NetSimScenario& sc, const sim::Net
   for (const auto& c : sc.changes)
     if (m.route_time_s >= 0)
       rec.obstacle_changes.push_back({m.route_time_s + c.after_route_s, c.cells, c.value});
+  const int source_id = static_cast<int>(sc.source);
+  rec.markers.push_back({"destination", sc.destination, -1, "destination of the source"});
+  rec.markers.push_back({"start", sc.robots[sc.source], source_id, "start of the source"});
+  if (m.route_time_s >= 0)
+    rec.events.push_back({m.route_time_s, "route", "the source has a route", source_id});
+  for (const auto& c : rec.obstacle_changes)
+    rec.events.push_back({c.t, "change",
+                          std::to_string(c.cells.size()) + " cells become " +
+                              (c.value == kOccupied ? "blocked" : "free"),
+                          -1});
+  if (m.arrival_time_s >= 0)
+    rec.events.push_back(
+        {m.arrival_time_s, "arrival", "the source reaches the destination", source_id});
   report::Plot traffic{
       "Radio traffic by message type", "", "bytes", report::PlotKind::kBar, false, {}, {}};
   report::Series bytes{"bytes on the air", "#1f77b4", {}, {}};

@@ -30,11 +30,12 @@ void save_stages(const OccupancyGrid& grid, const BinaryGrid& blocked,
   {
     auto f = figure("(a) binary map");
     f.binary(blocked, wall, render::colors::kWhite);
+    f.legend({{"free", render::colors::kWhite}, {"blocked", wall}});
     f.save(dir / "a_binary.png");
   }
   {
     // Edge cells coloured by their edge code (5..12 the eight shapes, 3..4 noise).
-    auto f = figure("(b) edges (colour = edge code)");
+    auto f = figure("(b) edge cells, coloured by edge code (5-12 shapes, 3-4 noise)");
     f.binary(blocked, render::colors::kGrey.with_alpha(0.35), render::colors::kWhite);
     const GridMap<std::uint8_t> codes = voronoi::edge_codes(blocked, border_blocked);
     GridMap<std::int32_t> lab(grid.geometry(), -1);
@@ -49,8 +50,10 @@ void save_stages(const OccupancyGrid& grid, const BinaryGrid& blocked,
     for (const float v : m.clearance.values())
       if (std::isfinite(v)) hi = std::max(hi, static_cast<double>(v));
     f.scalar(m.clearance, 0.0, hi, 0.6);
+    f.colorbar(0.0, hi * grid.resolution(), "clearance [m]");
     f.binary(blocked, wall);
     f.binary(m.diagram, render::colors::kRed);
+    f.legend({{"obstacle", wall}, {"Voronoi diagram", render::colors::kRed}});
     f.save(dir / "c_voronoi.png");
   }
   auto draw_lines = [&](render::Figure& f, bool only_separating) {
@@ -66,6 +69,10 @@ void save_stages(const OccupancyGrid& grid, const BinaryGrid& blocked,
     f.binary(blocked, wall, render::colors::kWhite);
     f.binary(m.diagram, render::colors::kRed.with_alpha(0.6));
     draw_lines(f, false);
+    f.legend({{"Voronoi diagram", render::colors::kRed},
+              {"critical point", render::colors::kOrange},
+              {"critical line (separates regions)", render::colors::kBlue},
+              {"critical line (rejected)", render::colors::kGrey}});
     f.save(dir / "d_critical.png");
   }
   {
@@ -73,6 +80,8 @@ void save_stages(const OccupancyGrid& grid, const BinaryGrid& blocked,
     f.binary(blocked, wall, render::colors::kWhite);
     f.labels(m.region, 0.75);
     draw_lines(f, true);
+    f.legend({{"region (one colour each)", render::palette(3)},
+              {"critical line", render::colors::kBlue}});
     f.save(dir / "e_regions.png");
   }
   {
@@ -89,6 +98,8 @@ void save_stages(const OccupancyGrid& grid, const BinaryGrid& blocked,
     }
     for (const auto& r : m.regions)
       f.marker(r.centre, render::colors::kRed, 4.0);
+    f.legend({{"region node", render::colors::kRed},
+              {"edge through a critical line", render::colors::kBlue}});
     f.save(dir / "f_graph.png");
   }
 }

@@ -11,7 +11,7 @@ import os from "node:os";
 import path from "node:path";
 import { pathToFileURL } from "node:url";
 
-const [pagePath, screenshotPath, templatePath, minimalPath] = process.argv.slice(2);
+const [pagePath, screenshotPath, templatePath, minimalPath, manyPath] = process.argv.slice(2);
 if (!pagePath || !screenshotPath) {
   console.error("usage: node replay.test.mjs PAGE.html SCREENSHOT.png");
   process.exit(2);
@@ -148,6 +148,7 @@ try {
   check((await diff("hover", "zoomed")) > 10000, "the wheel zooms the map");
   await page.mouse.dblclick(box.x + box.width / 2, box.y + box.height / 2);
   await page.mouse.move(box.x + box.width / 2, box.y + box.height + 200);
+  await page.evaluate(() => window.voronav.selectRobot(null));  // the click may have picked one
   await snap("reset");
   check((await diff("view0", "reset")) === 0, "double-click restores the view");
 
@@ -176,6 +177,50 @@ try {
   check(plots.length === 2, `two plots (${plots.length})`);
   check(plots.every((f) => f > 0.01), "plots are drawn: " + plots.map((f) => (100 * f).toFixed(1) + "% ink").join(", "));
 
+  // Goals are marked in their robot's colour, on the map.
+  const markers = await page.evaluate(() => window.voronav.markers());
+  const colours = await page.evaluate(() => window.voronav.robotColors());
+  const canvasBox = await page.locator("#map").boundingBox();
+  check(markers.length === 3 && markers.every((m) => m.kind === "goal"), `three goal markers (${markers.length})`);
+  check(markers.every((m) => colours.includes(m.color)), "each goal is drawn in its robot's colour");
+  check(markers.every((m) => m.px > 0 && m.py > 0 && m.px < canvasBox.width && m.py < canvasBox.height),
+        "every goal lies inside the map view");
+  await page.evaluate(() => window.voronav.setLayer("markers", false));
+  await snap("nomarkers");
+  await page.evaluate(() => window.voronav.setLayer("markers", true));
+  await snap("markers");
+  check((await diff("nomarkers", "markers")) > 50, "the goal markers are drawn");
+
+  // The event track lists the run's events; a click jumps to one.
+  const events = await page.evaluate(() => window.voronav.events());
+  const kinds = new Set(events.map((e) => e.kind));
+  check(kinds.has("change") && kinds.has("repair") && kinds.has("arrival"),
+        "events: " + events.map((e) => e.kind + "@" + e.t.toFixed(1)).join(", "));
+  check((await page.evaluate(() => window.voronav.eventButtons())) === events.length,
+        "one mark per event on the track under the slider");
+  await page.locator('#eventtrack .ev[data-kind="arrival"]').first().click();
+  state = await page.evaluate(() => window.voronav.state());
+  check(Math.abs(state.time - events.find((e) => e.kind === "arrival").t) < 1e-9 && !state.playing,
+        `clicking the first arrival mark jumps to t = ${state.time} s`);
+  // The change and the repair are 0.15 s apart: their marks overlap, so click this one directly.
+  await page.locator('#eventtrack .ev[data-kind="change"]').dispatchEvent("click");
+  state = await page.evaluate(() => window.voronav.state());
+  check(Math.abs(state.time - 6.0) < 1e-9, `the change event jumps to t = ${state.time} s`);
+  const evTitle = await page.getAttribute('#eventtrack .ev[data-kind="repair"]', "title");
+  check(evTitle && evTitle.includes("re-plans"), `event tooltip: "${evTitle}"`);
+  check((await page.$$("#eventlist .row")).length === events.length, "the events are listed beside the map");
+
+  // Speeds up to 64x.
+  const speeds = await page.$$eval("#speed option", (os) => os.map((o) => Number(o.value)));
+  check(Math.max(...speeds) === 64, "speeds up to " + Math.max(...speeds) + "x");
+
+  // Follow mode keeps the selected robot in the middle of the view.
+  await page.evaluate(() => { window.voronav.selectRobot(2, true); window.voronav.setTime(10); });
+  const followed = (await page.evaluate(() => window.voronav.robotPositions())).find((r) => r.id === 2);
+  check(Math.abs(followed.px - canvasBox.width / 2) < 2, `followed robot at the centre (${followed.px.toFixed(1)} of ${canvasBox.width})`);
+  await page.evaluate(() => { window.voronav.selectRobot(null, false); });
+  await page.mouse.dblclick(canvasBox.x + 5, canvasBox.y + 5);
+
   // A moment with messages in flight, for the screenshot.
   await page.evaluate(() => window.voronav.setTime(6.2));
   await page.screenshot({ path: screenshotPath, fullPage: true });
@@ -200,6 +245,38 @@ try {
     await page.waitForTimeout(200);
     const st = await page.evaluate(() => window.voronav.state());
     check(!st.playing && st.time === 0 && st.end === 0, "play on a recording without time stops at once");
+  }
+
+  // Many robots: distinct colours, a short searchable list, the map revealed over time, a tree
+  // that appears when it is built.
+  if (manyPath) {
+    await page.goto(pathToFileURL(path.resolve(manyPath)).href);
+    await page.waitForFunction(() => window.voronav && window.voronav.ready, null, { timeout: 20000 });
+    const cols = await page.evaluate(() => window.voronav.robotColors());
+    check(new Set(cols).size === cols.length && cols.length === 60, `60 robots get ${new Set(cols).size} distinct colours`);
+    const listed = await page.evaluate(() => window.voronav.listedRobots());
+    check(listed.length > 0 && listed.length <= 30, `the robot list shows ${listed.length} rows, not 60`);
+    await page.fill("#robotfind", "42");
+    const found = await page.evaluate(() => window.voronav.listedRobots());
+    check(found.length >= 1 && found[0] === 42, "typing an id finds the robot: " + found.join(","));
+    await page.evaluate(() => window.voronav.setTime(1.0));
+    const early = await page.evaluate(() => window.voronav.knownCells());
+    await page.evaluate(() => window.voronav.setTime(window.voronav.state().end));
+    const late = await page.evaluate(() => window.voronav.knownCells());
+    check(early > 0 && early < late, `explored area grows: ${early} cells known at t = 1 s, ${late} at the end`);
+    await page.evaluate(() => window.voronav.setTime(1.0));
+    check((await page.evaluate(() => window.voronav.knownCells())) === early, "seeking back hides the later cells again");
+    const treeDiff = async (t) => {
+      await page.evaluate((x) => window.voronav.setTime(x), t);
+      await page.evaluate(() => window.voronav.setLayer("graph:0", true));
+      await snap("tree_on");
+      await page.evaluate(() => window.voronav.setLayer("graph:0", false));
+      await snap("tree_off");
+      await page.evaluate(() => window.voronav.setLayer("graph:0", true));
+      return diff("tree_on", "tree_off");
+    };
+    check((await treeDiff(4.9)) === 0, "the tree is not drawn before it is built (t = 4.9 s)");
+    check((await treeDiff(5.0)) > 20, "the tree is drawn once it is built (t = 5 s)");
   }
 
   check(errors.length === 0, "no console errors or warnings" + (errors.length ? ": " + errors.join(" | ") : ""));

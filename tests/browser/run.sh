@@ -42,5 +42,37 @@ json.dump({"format": "voronav-recording", "version": 1, "title": "map only",
 PY
 rm -rf "$work/minimal"
 "$bin" replay --recording "$work/minimal.json" --out "$work/minimal" >/dev/null
+# A crowded exploration-style recording: 60 robots on a 120 x 80 map that is revealed over time
+# (reveal times grow with the distance from the start), with a tree that appears at t = 5 s.
+python3 - "$work/many.json" <<'PY'
+import json, math, sys
+W, H, res, n = 120, 80, 0.25, 60
+occ = []
+for y in range(H):
+    for x in range(W):
+        occ.append(100 if x in (0, W - 1) or y in (0, H - 1) else 0)
+def rle(v):
+    out = []
+    for a in v:
+        if out and out[-2] == a: out[-1] += 1
+        else: out += [a, 1]
+    return out
+reveal = [int(10 * 0.2 * math.hypot(x - 10, y - 10)) for y in range(H) for x in range(W)]
+robots = []
+for i in range(n):
+    a = 2 * math.pi * i / n
+    poses = [[0.1 * k, 2.5 + 0.005 * k * 20 * (1 + math.cos(a)), 2.5 + 0.005 * k * 12 * (1 + math.sin(a)), a] for k in range(0, 301, 10)]
+    robots.append({"id": i + 1, "poses": poses})
+json.dump({"format": "voronav-recording", "version": 1, "title": "many robots",
+           "map": {"width": W, "height": H, "resolution": res, "occupancy": rle(occ)},
+           "reveal": {"period_s": 0.1, "cells": rle(reveal)},
+           "graphs": [{"name": "tree", "shown_from": 5.0, "nodes": [{"id": 0, "p": [3, 3]}, {"id": 1, "p": [20, 15]}], "edges": [[0, 1]]}],
+           "robots": robots,
+           "markers": [{"kind": "goal", "p": [25, 16], "robot": 1, "label": "goal of robot 1"}],
+           "events": [{"t": 5.0, "kind": "tree", "text": "the tree is built"}]},
+          open(sys.argv[1], "w"))
+PY
+rm -rf "$work/many"
+"$bin" replay --recording "$work/many.json" --out "$work/many" >/dev/null
 node "$work/replay.test.mjs" "$work/page/index.html" "$work/replay.png" \
-  "$here/../../voronav/report/viewer.html" "$work/minimal/index.html"
+  "$here/../../voronav/report/viewer.html" "$work/minimal/index.html" "$work/many/index.html"

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "voronav/core/error.hpp"
@@ -121,6 +122,13 @@ void Figure::check_raster(int width, int height, const char* what) const {
 
 void Figure::occupancy(const OccupancyGrid& grid) {
   check_raster(grid.width(), grid.height(), "occupancy");
+  occupancy_drawn_ = true;
+  for (int y = offset_.y; y < offset_.y + geometry_.height && !unknown_drawn_; ++y)
+    for (int x = offset_.x; x < offset_.x + geometry_.width; ++x)
+      if (grid[Cell{x, y}] < 0) {
+        unknown_drawn_ = true;
+        break;
+      }
   raster([&grid](Cell c) {
     const int v = grid[c];
     if (v < 0 || v > 100) return argb(colors::kUnknown);
@@ -257,15 +265,100 @@ void Figure::text(Vec2 p, const std::string& text, Color color, double size_px) 
 }
 
 void Figure::legend(std::vector<std::pair<std::string, Color>> entries) {
-  ops_.push_back([entries = std::move(entries), w = width_px_, h = height_px_](cairo_t* cr) {
-    internal::draw_legend(cr, entries, w, h, /*top=*/false);
-  });
+  for (auto& e : entries)
+    legend_.push_back(std::move(e));
+}
+
+void Figure::colorbar(double lo, double hi, const std::string& label) {
+  if (!std::isfinite(lo) || !std::isfinite(hi))
+    throw Error("render::Figure::colorbar: lo and hi must be finite");
+  colorbars_.push_back({lo, hi, label});
+}
+
+namespace {
+// 1, 2 or 5 times a power of ten, the largest not above `raw`.
+double nice_length(double raw) {
+  if (!(raw > 0.0) || !std::isfinite(raw)) return 0.0;
+  const double e = std::pow(10.0, std::floor(std::log10(raw)));
+  const double f = raw / e;
+  return (f >= 5.0 ? 5.0 : f >= 2.0 ? 2.0 : 1.0) * e;
+}
+std::string short_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+}  // namespace
+
+std::pair<double, double> Figure::scale_bar() const {
+  if (options_.scale_unit.empty()) return {0.0, 0.0};
+  // Cells per unit: 1/resolution for metres, 1 for cells.
+  const double cells_per_unit = options_.scale_unit == "m" ? 1.0 / geometry_.resolution : 1.0;
+  const double px_per_unit = ppc_ * cells_per_unit;
+  const double len = nice_length(0.22 * width_px_ / px_per_unit);
+  return {len, len * px_per_unit};
 }
 
 void Figure::save(const std::filesystem::path& path) const {
+  if (options_.title.empty())
+    throw Error(path.string(), 0,
+                "render::Figure: a picture needs a title (FigureOptions::title) saying what it "
+                "shows");
   internal::save_surface(path, width_px_, height_px_, [this](cairo_t* cr) {
     for (const auto& op : ops_)
       op(cr);
+    // Scale bar, lower left.
+    if (const auto [len, px] = scale_bar(); len > 0.0 && px >= 4.0) {
+      const double x0 = 10, y0 = height_px_ - 12.0;
+      const std::string text = short_number(len) + " " + options_.scale_unit;
+      cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
+      cairo_rectangle(cr, x0 - 6, y0 - 18, px + 16 + 9.0 * static_cast<double>(text.size()), 26);
+      cairo_fill(cr);
+      cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+      cairo_set_line_width(cr, 2.0);
+      cairo_move_to(cr, x0, y0 - 6);
+      cairo_line_to(cr, x0, y0);
+      cairo_line_to(cr, x0 + px, y0);
+      cairo_line_to(cr, x0 + px, y0 - 6);
+      cairo_stroke(cr);
+      internal::draw_label(cr, x0 + px + 6, y0 + 2, text, 12.0, colors::kBlack);
+    }
+    // Colour bars, upper right, one under the other; the box grows to hold the label.
+    double top = header_px_ + 10.0;
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, 11.0);
+    for (const auto& cb : colorbars_) {
+      cairo_text_extents_t ext;
+      cairo_text_extents(cr, cb.label.c_str(), &ext);
+      const double bw = 14, bh = std::min(140.0, 0.35 * (height_px_ - header_px_));
+      const double box_w = std::max(bw + 64, ext.x_advance + 12);
+      const double bx = width_px_ - box_w - 6, x = bx + 8;
+      cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
+      cairo_rectangle(cr, bx, top - 6, box_w, bh + 30);
+      cairo_fill(cr);
+      for (int k = 0; k < static_cast<int>(bh); ++k) {
+        internal::set_color(cr, viridis(1.0 - k / std::max(1.0, bh - 1)));
+        cairo_rectangle(cr, x, top + k, bw, 1.0);
+        cairo_fill(cr);
+      }
+      cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+      cairo_set_line_width(cr, 1.0);
+      cairo_rectangle(cr, x, top, bw, bh);
+      cairo_stroke(cr);
+      internal::draw_label(cr, x + bw + 4, top + 9, short_number(cb.hi), 11.0, colors::kBlack);
+      internal::draw_label(cr, x + bw + 4, top + bh, short_number(cb.lo), 11.0, colors::kBlack);
+      internal::draw_label(cr, bx + 4, top + bh + 18, cb.label, 11.0, colors::kBlack);
+      top += bh + 40;
+    }
+    // Legend, lower right: the occupancy key first.
+    std::vector<std::pair<std::string, Color>> entries;
+    if (occupancy_drawn_ && options_.occupancy_key) {
+      entries.emplace_back("free", colors::kWhite);
+      entries.emplace_back("occupied", colors::kBlack);
+      if (unknown_drawn_) entries.emplace_back("unknown", colors::kUnknown);
+    }
+    entries.insert(entries.end(), legend_.begin(), legend_.end());
+    if (!entries.empty()) internal::draw_legend(cr, entries, width_px_, height_px_, /*top=*/false);
   });
 }
 

@@ -3,6 +3,9 @@
 // calls are recorded and replayed at save(), so one Figure can be written in both formats.
 // Coordinates: Cell overloads draw at cell centres; Vec2 overloads take world metres and use the
 // grid's GridGeometry (resolution, origin), so anything in the world frame lands where it is.
+// One figure style for every picture the tool writes (issue 20): save() refuses a figure without
+// a title, and draws a scale bar (metres, or cells for Moving AI maps), a key of the occupancy
+// greys when the map was drawn, the legend entries, and a colour bar for every colour scale.
 #pragma once
 
 #include <cstdint>
@@ -37,9 +40,16 @@ struct FigureOptions {
   double pixels_per_cell = 0.0;
   int auto_side_px = 900;
   int max_side_px = 8192;  ///< hard limit for huge maps (pixels_per_cell is reduced to fit)
-  std::string title{};     ///< drawn in a band above the map when not empty
+  std::string title{};     ///< drawn in a band above the map; required by save()
   /// Draw only these cells of the grid (e.g. known_bounds(map)); empty box = the whole grid.
   CellBox crop{};
+  /// Unit of the scale bar in the lower-left corner: "m" (world metres, from the resolution),
+  /// "cells" (Moving AI maps, whose cells have no size), or "" for none (a diagram that is not a
+  /// map, such as the (M,D) network).
+  std::string scale_unit = "m";
+  /// The key of the occupancy greys in the legend when occupancy() was drawn. Off only for
+  /// pixel-exact tests of tiny figures, where the box would cover the map.
+  bool occupancy_key = true;
 };
 
 class Figure {
@@ -73,11 +83,18 @@ class Figure {
   void arrow(Vec2 a, Vec2 b, Color color, double width_px = 1.5);
   void text(Vec2 p, const std::string& text, Color color, double size_px = 12.0);
 
-  /// A legend box in the lower-right corner.
+  /// Entries of the legend box in the lower-right corner (calls add up). When occupancy() was
+  /// drawn, the key of its greys (free, occupied, unknown where present) comes first.
   void legend(std::vector<std::pair<std::string, Color>> entries);
+  /// A colour bar in the upper-right corner for a scalar() layer: viridis from lo to hi, with
+  /// `label` (including the unit, e.g. "clearance [m]").
+  void colorbar(double lo, double hi, const std::string& label);
 
-  /// Writes .png or .svg (by extension); throws voronav::Error otherwise or on write failure.
+  /// Writes .png or .svg (by extension); throws voronav::Error otherwise, on write failure, or
+  /// when the figure has no title.
   void save(const std::filesystem::path& path) const;
+  /// The scale bar save() draws: its length in the figure's unit and in pixels (0 without one).
+  [[nodiscard]] std::pair<double, double> scale_bar() const;
 
   [[nodiscard]] int width_px() const { return width_px_; }
   [[nodiscard]] int height_px() const { return height_px_; }
@@ -100,6 +117,13 @@ class Figure {
   int header_px_ = 0;
   int width_px_ = 0, height_px_ = 0;
   std::vector<Op> ops_;
+  std::vector<std::pair<std::string, Color>> legend_;
+  bool occupancy_drawn_ = false, unknown_drawn_ = false;
+  struct ColorBar {
+    double lo = 0.0, hi = 1.0;
+    std::string label;
+  };
+  std::vector<ColorBar> colorbars_;
 };
 
 }  // namespace voronav::render

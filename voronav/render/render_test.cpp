@@ -7,6 +7,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "voronav/core/error.hpp"
@@ -41,32 +42,33 @@ TEST(Figure, OccupancyRowZeroIsAtTheBottom) {
   OccupancyGrid g(GridGeometry{4, 3, 0.5, {{-1.0, 2.0}, 0.0}}, kFree);
   g[Cell{0, 0}] = kOccupied;
   g[Cell{3, 2}] = kUnknown;
-  Figure f(g.geometry(), {.pixels_per_cell = 10});
+  Figure f(g.geometry(),
+           {.pixels_per_cell = 10, .title = "occupancy", .scale_unit = "", .occupancy_key = false});
   f.occupancy(g);
   const fs::path p = temp("occ.png");
   f.save(p);
   const Png png(p);
   ASSERT_EQ(png.width(), 40);
-  ASSERT_EQ(png.height(), 30);
-  EXPECT_EQ(png.rgb(5, 25), (std::array<int, 3>{0, 0, 0}));        // cell (0,0): bottom-left
-  EXPECT_EQ(png.rgb(35, 5), (std::array<int, 3>{205, 205, 205}));  // cell (3,2): top-right
-  EXPECT_EQ(png.rgb(15, 15), (std::array<int, 3>{255, 255, 255}));
+  ASSERT_EQ(png.height(), 28 + 30);                                     // title band + map
+  EXPECT_EQ(png.rgb(5, 28 + 25), (std::array<int, 3>{0, 0, 0}));        // cell (0,0): bottom-left
+  EXPECT_EQ(png.rgb(35, 28 + 5), (std::array<int, 3>{205, 205, 205}));  // cell (3,2): top-right
+  EXPECT_EQ(png.rgb(15, 28 + 15), (std::array<int, 3>{255, 255, 255}));
   fs::remove(p);
 }
 
 TEST(Figure, WorldShapesUseTheGeometry) {
   const GridGeometry geo{10, 10, 0.1, {{5.0, 5.0}, 0.0}};
-  Figure f(geo, {.pixels_per_cell = 4});
-  // World point (5.55, 5.15) is cell (5, 1): pixel centre (22, 40 - 6) = (22, 34).
+  Figure f(geo, {.pixels_per_cell = 4, .title = "circle", .scale_unit = ""});
+  // World point (5.55, 5.15) is cell (5, 1): pixel centre (22, 28 + 40 - 6) = (22, 62).
   EXPECT_NEAR(f.to_pixel(Vec2{5.55, 5.15}).first, 22, 1e-9);
-  EXPECT_NEAR(f.to_pixel(Vec2{5.55, 5.15}).second, 34, 1e-9);
+  EXPECT_NEAR(f.to_pixel(Vec2{5.55, 5.15}).second, 62, 1e-9);
   EXPECT_NEAR(f.to_pixel(Cell{5, 1}).first, f.to_pixel(Vec2{5.55, 5.15}).first, 1e-9);
   EXPECT_NEAR(f.to_pixel(Cell{5, 1}).second, f.to_pixel(Vec2{5.55, 5.15}).second, 1e-9);
   f.circle({5.55, 5.15}, 0.1, colors::kRed);
   const fs::path p = temp("circle.png");
   f.save(p);
   const Png png(p);
-  EXPECT_EQ(png.rgb(22, 34), (std::array<int, 3>{0xd6, 0x27, 0x28}));
+  EXPECT_EQ(png.rgb(22, 62), (std::array<int, 3>{0xd6, 0x27, 0x28}));
   EXPECT_EQ(png.rgb(2, 2), (std::array<int, 3>{255, 255, 255}));
   fs::remove(p);
 }
@@ -105,19 +107,23 @@ TEST(Figure, CropToKnownCells) {
   EXPECT_EQ(b.y0, 8);
   EXPECT_EQ(b.x1, 32);
   EXPECT_EQ(b.y1, 22);
-  Figure f(g.geometry(), {.pixels_per_cell = 10, .crop = b});
+  Figure f(g.geometry(), {.pixels_per_cell = 10,
+                          .title = "crop",
+                          .crop = b,
+                          .scale_unit = "",
+                          .occupancy_key = false});
   EXPECT_EQ(f.width_px(), 140);
-  EXPECT_EQ(f.height_px(), 140);
-  // Cell (20, 10) is crop cell (2, 2): pixel centre (25, 140 - 25); its world centre agrees.
+  EXPECT_EQ(f.height_px(), 28 + 140);
+  // Cell (20, 10) is crop cell (2, 2): pixel centre (25, 28 + 140 - 25); its world centre agrees.
   EXPECT_NEAR(f.to_pixel(Cell{20, 10}).first, 25, 1e-9);
-  EXPECT_NEAR(f.to_pixel(g.geometry().cell_center(Cell{20, 10})).second, 115, 1e-9);
+  EXPECT_NEAR(f.to_pixel(g.geometry().cell_center(Cell{20, 10})).second, 143, 1e-9);
   f.occupancy(g);
   const fs::path p = temp("crop.png");
   f.save(p);
   const Png png(p);
-  EXPECT_EQ(png.rgb(25, 115), (std::array<int, 3>{0, 0, 0}));
-  EXPECT_EQ(png.rgb(45, 95), (std::array<int, 3>{255, 255, 255}));
-  EXPECT_EQ(png.rgb(5, 5), (std::array<int, 3>{205, 205, 205}));
+  EXPECT_EQ(png.rgb(25, 143), (std::array<int, 3>{0, 0, 0}));
+  EXPECT_EQ(png.rgb(45, 123), (std::array<int, 3>{255, 255, 255}));
+  EXPECT_EQ(png.rgb(5, 33), (std::array<int, 3>{205, 205, 205}));
   fs::remove(p);
   EXPECT_THROW(Figure(g.geometry(), {.crop = {0, 0, 60, 10}}), Error);
   EXPECT_EQ(known_bounds(OccupancyGrid(4, 4, kUnknown)).x1, 4);
@@ -125,7 +131,17 @@ TEST(Figure, CropToKnownCells) {
 
 TEST(Figure, Errors) {
   EXPECT_THROW(Figure(GridGeometry{0, 5, 1.0, {}}), Error);
-  Figure f(GridGeometry{5, 5, 1.0, {}});
+  // A picture must say what it shows.
+  try {
+    Figure(GridGeometry{5, 5, 1.0, {}}).save(temp("untitled.png"));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("title"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("untitled.png"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(temp("untitled.png")));
+  Figure f(GridGeometry{5, 5, 1.0, {}}, {.title = "errors"});
+  EXPECT_THROW(f.colorbar(0.0, std::numeric_limits<double>::infinity(), "x"), Error);
   try {
     f.save(temp("x.bmp"));
     FAIL();
@@ -142,6 +158,42 @@ TEST(Figure, Errors) {
     EXPECT_NE(std::string(e.what()).find("5x5"), std::string::npos) << e.what();
   }
   EXPECT_THROW(f.binary(BinaryGrid(5, 6, 0), colors::kBlack), Error);
+}
+
+// Every map picture carries a scale bar of a round length (1, 2 or 5 times a power of ten) about
+// a fifth of the width, a colour bar per colour scale, and the occupancy key.
+TEST(Figure, ScaleBarColourBarAndKey) {
+  OccupancyGrid g(GridGeometry{200, 100, 0.05, {}}, kFree);  // 10 m x 5 m
+  Figure f(g.geometry(), {.pixels_per_cell = 4, .title = "scale"});
+  const auto [len, px] = f.scale_bar();
+  EXPECT_DOUBLE_EQ(len, 2.0);  // 0.22 * 800 px = 176 px = 2.2 m: the round length below is 2 m
+  EXPECT_NEAR(px, len * 4 / 0.05, 1e-9);
+  f.occupancy(g);
+  GridMap<float> field(g.geometry(), 0.0f);
+  f.scalar(field, 0.0, 3.0, 0.5);
+  f.colorbar(0.0, 3.0, "clearance [m]");
+  const fs::path p = temp("scale.png");
+  f.save(p);
+  const Png png(p);
+  // The bar's horizontal stroke, 12 px above the bottom, 10 px from the left edge onwards.
+  const int y = png.height() - 12;
+  EXPECT_LT(png.rgb(10 + static_cast<int>(px / 2), y)[0], 60);
+  // The colour bar: viridis from yellow (top, hi) to purple (bottom, lo).
+  int x = png.width() - 1;  // the middle of the bar: the first yellow pixel from the right, + 7
+  const auto yellow = [](std::array<int, 3> c) { return c[0] + c[1] > 300 && c[2] < 120; };
+  while (x > png.width() - 160 && !yellow(png.rgb(x, 28 + 12)))
+    --x;
+  x -= 7;
+  const auto top = png.rgb(x, 28 + 12), bottom = png.rgb(x, 28 + 10 + 135);
+  EXPECT_GT(top[0] + top[1], 300) << "top " << top[0] << "," << top[1] << "," << top[2];
+  EXPECT_LT(bottom[1], 80) << "bottom " << bottom[0] << "," << bottom[1] << "," << bottom[2];
+  fs::remove(p);
+  // Moving AI maps: cells.
+  Figure c(GridGeometry{50, 50, 1.0, {}},
+           {.pixels_per_cell = 8, .title = "cells", .scale_unit = "cells"});
+  EXPECT_DOUBLE_EQ(c.scale_bar().first, 10.0);  // 0.22 * 400 px / 8 px = 11 cells -> 10 cells
+  EXPECT_EQ(Figure(GridGeometry{5, 5, 1.0, {}}, {.title = "d", .scale_unit = ""}).scale_bar().first,
+            0.0);
 }
 
 TEST(Figure, HugeMapIsScaledDown) {

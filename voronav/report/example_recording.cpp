@@ -270,6 +270,14 @@ Recording make_example_recording(const ExampleOptions& o) {
       change.cells.push_back({x, y});
   rec.obstacle_changes.push_back(change);
 
+  // Where each robot is going, and what happens when.
+  for (const Route& r : rs)
+    rec.markers.push_back({"goal", r.waypoints.back(), r.id, std::string("goal of ") + r.name});
+  rec.events.push_back({kChangeTime, "change", "a box appears in the corridor", -1});
+  rec.events.push_back({kChangeTime + 0.15, "repair", "robot 1 re-plans around the box", 1});
+  for (const auto& t : rec.robots)
+    rec.events.push_back({t.poses.back().t, "arrival", t.name + " reaches its goal", t.id});
+
   // Messages: a Search from everyone at the start, a Path update every second to robots in radio
   // range, and robot 1's Repair right after the change.
   const double end = rec.end_time();

@@ -206,6 +206,8 @@ double Recording::start_time() const {
     lo = std::min(lo, m.t);
   for (const auto& c : obstacle_changes)
     lo = std::min(lo, c.t);
+  for (const auto& e : events)
+    lo = std::min(lo, e.t);
   return std::isfinite(lo) ? lo : 0.0;
 }
 
@@ -217,6 +219,8 @@ double Recording::end_time() const {
     hi = std::max(hi, m.t);
   for (const auto& c : obstacle_changes)
     hi = std::max(hi, c.t);
+  for (const auto& e : events)
+    hi = std::max(hi, e.t);
   return std::isfinite(hi) ? hi : 0.0;
 }
 
@@ -332,6 +336,46 @@ void validate(const Recording& rec, const std::string& source) {
              "cell (" + std::to_string(c.cells[k].x) + ", " + std::to_string(c.cells[k].y) +
                  ") is outside the map");
   }
+  for (std::size_t i = 0; i < rec.graph_appearances.size(); ++i) {
+    const auto& a = rec.graph_appearances[i];
+    if (a.graph >= rec.graphs.size())
+      fail(source, at_index("graph_appearances", i),
+           "names graph " + std::to_string(a.graph) + " but there are " +
+               std::to_string(rec.graphs.size()));
+    check_finite(a.t, source, at_index("graphs", a.graph) + ".shown_from");
+  }
+  if (!rec.reveal.empty()) {
+    if (rec.reveal.width() != g.width || rec.reveal.height() != g.height)
+      fail(source, "reveal.cells",
+           "size " + std::to_string(rec.reveal.width()) + "x" +
+               std::to_string(rec.reveal.height()) + " differs from the map's " +
+               std::to_string(g.width) + "x" + std::to_string(g.height));
+    for (std::size_t i = 0; i < rec.reveal.size(); ++i)
+      if (rec.reveal[i] < -1)
+        fail(source, "reveal.cells",
+             "value " + std::to_string(rec.reveal[i]) + " at cell index " + std::to_string(i) +
+                 " is below -1");
+    if (!(rec.reveal_period_s > 0.0) || !std::isfinite(rec.reveal_period_s))
+      fail(source, "reveal.period_s", "expected a positive finite number");
+  }
+  for (std::size_t i = 0; i < rec.markers.size(); ++i) {
+    const auto& m = rec.markers[i];
+    const std::string f = at_index("markers", i);
+    if (m.kind != "goal" && m.kind != "start" && m.kind != "destination")
+      fail(source, f + ".kind",
+           "expected \"goal\", \"start\" or \"destination\", got \"" + m.kind + "\"");
+    if (!m.position.is_finite()) fail(source, f + ".p", "non-finite position");
+    if (m.robot != -1 && !robot_ids.contains(m.robot))
+      fail(source, f + ".robot", "unknown robot id " + std::to_string(m.robot));
+  }
+  for (std::size_t i = 0; i < rec.events.size(); ++i) {
+    const auto& e = rec.events[i];
+    const std::string f = at_index("events", i);
+    check_finite(e.t, source, f + ".t");
+    if (e.kind.empty()) fail(source, f + ".kind", "must not be empty");
+    if (e.robot != -1 && !robot_ids.contains(e.robot))
+      fail(source, f + ".robot", "unknown robot id " + std::to_string(e.robot));
+  }
   for (std::size_t i = 0; i < rec.plots.size(); ++i) {
     const auto& p = rec.plots[i];
     const std::string f = at_index("plots", i);
@@ -381,7 +425,8 @@ std::string to_json(const Recording& rec) {
                             {"visible", r.visible},
                             {"cells", rle_encode(r.cells.values())}});
   j["graphs"] = json::array();
-  for (const auto& gr : rec.graphs) {
+  for (std::size_t gi = 0; gi < rec.graphs.size(); ++gi) {
+    const auto& gr = rec.graphs[gi];
     json nodes = json::array();
     for (const auto& n : gr.nodes) {
       json node = {{"id", n.id}, {"p", {n.position.x, n.position.y}}};
@@ -391,22 +436,26 @@ std::string to_json(const Recording& rec) {
     json edges = json::array();
     for (const auto& e : gr.edges)
       edges.push_back({e.from, e.to});
-    j["graphs"].push_back({{"name", gr.name},
-                           {"color", gr.color},
-                           {"visible", gr.visible},
-                           {"nodes", std::move(nodes)},
-                           {"edges", std::move(edges)}});
+    json layer = {{"name", gr.name},
+                  {"color", gr.color},
+                  {"visible", gr.visible},
+                  {"nodes", std::move(nodes)},
+                  {"edges", std::move(edges)}};
+    for (const auto& a : rec.graph_appearances)
+      if (a.graph == gi) layer["shown_from"] = a.t;
+    j["graphs"].push_back(std::move(layer));
   }
   j["robots"] = json::array();
   for (const auto& r : rec.robots) {
     json poses = json::array();
     for (const auto& p : r.poses)
       poses.push_back({p.t, p.pose.position.x, p.pose.position.y, p.pose.yaw});
-    j["robots"].push_back({{"id", r.id},
-                           {"name", r.name},
-                           {"radius", r.radius},
-                           {"color", r.color},
-                           {"poses", std::move(poses)}});
+    json robot = {{"id", r.id},
+                  {"name", r.name},
+                  {"radius", r.radius},
+                  {"color", r.color},
+                  {"poses", std::move(poses)}};
+    j["robots"].push_back(std::move(robot));
   }
   j["paths"] = json::array();
   for (const auto& p : rec.paths) {
@@ -429,6 +478,20 @@ std::string to_json(const Recording& rec) {
       cells.push_back({cell.x, cell.y});
     j["obstacle_changes"].push_back(
         {{"t", c.t}, {"value", static_cast<int>(c.value)}, {"cells", std::move(cells)}});
+  }
+  if (!rec.reveal.empty())
+    j["reveal"] = {{"period_s", rec.reveal_period_s}, {"cells", rle_encode(rec.reveal.values())}};
+  j["markers"] = json::array();
+  for (const auto& m : rec.markers) {
+    json marker = {{"kind", m.kind}, {"p", {m.position.x, m.position.y}}, {"label", m.label}};
+    if (m.robot != -1) marker["robot"] = m.robot;
+    j["markers"].push_back(std::move(marker));
+  }
+  j["events"] = json::array();
+  for (const auto& e : rec.events) {
+    json event = {{"t", e.t}, {"kind", e.kind}, {"text", e.text}};
+    if (e.robot != -1) event["robot"] = e.robot;
+    j["events"].push_back(std::move(event));
   }
   j["plots"] = json::array();
   for (const auto& p : rec.plots) {
@@ -525,6 +588,8 @@ Recording from_json(std::string_view text, const std::string& source) {
       layer.name = rd.string(rd.require(gj, "name", f), f + ".name");
       layer.color = rd.opt_string(gj, "color", f, layer.color);
       layer.visible = rd.opt_bool(gj, "visible", f, true);
+      if (const json* v = rd.optional(gj, "shown_from", f))
+        rec.graph_appearances.push_back({rec.graphs.size(), rd.number(*v, f + ".shown_from")});
       const json& nodes = rd.array(rd.require(gj, "nodes", f), f + ".nodes");
       for (std::size_t k = 0; k < nodes.size(); ++k) {
         const std::string nf = at_index(f + ".nodes", k);
@@ -616,6 +681,40 @@ Recording from_json(std::string_view text, const std::string& source) {
         c.cells.push_back({rd.int32(cells[k][0], cf + "[0]"), rd.int32(cells[k][1], cf + "[1]")});
       }
       rec.obstacle_changes.push_back(std::move(c));
+    }
+  }
+  if (const json* rv = rd.optional(j, "reveal", "")) {
+    if (const json* v = rd.optional(*rv, "period_s", "reveal"))
+      rec.reveal_period_s = rd.number(*v, "reveal.period_s");
+    rec.reveal = GridMap<std::int32_t>(g);
+    auto cells = rd.rle<std::int32_t>(rd.require(*rv, "cells", "reveal"), "reveal.cells", g.size(),
+                                      -1, std::numeric_limits<std::int32_t>::max());
+    std::copy(cells.begin(), cells.end(), rec.reveal.data().begin());
+  }
+  if (const json* ms = rd.optional(j, "markers", "")) {
+    rd.array(*ms, "markers");
+    for (std::size_t i = 0; i < ms->size(); ++i) {
+      const json& mj = (*ms)[i];
+      const std::string f = at_index("markers", i);
+      MarkerRecord mk;
+      mk.kind = rd.opt_string(mj, "kind", f, mk.kind);
+      mk.position = rd.point(rd.require(mj, "p", f), f + ".p");
+      if (const json* v = rd.optional(mj, "robot", f)) mk.robot = rd.int32(*v, f + ".robot");
+      mk.label = rd.opt_string(mj, "label", f);
+      rec.markers.push_back(std::move(mk));
+    }
+  }
+  if (const json* es = rd.optional(j, "events", "")) {
+    rd.array(*es, "events");
+    for (std::size_t i = 0; i < es->size(); ++i) {
+      const json& ej = (*es)[i];
+      const std::string f = at_index("events", i);
+      EventRecord e;
+      e.t = rd.number(rd.require(ej, "t", f), f + ".t");
+      e.kind = rd.string(rd.require(ej, "kind", f), f + ".kind");
+      e.text = rd.opt_string(ej, "text", f);
+      if (const json* v = rd.optional(ej, "robot", f)) e.robot = rd.int32(*v, f + ".robot");
+      rec.events.push_back(std::move(e));
     }
   }
   if (const json* ps = rd.optional(j, "plots", "")) {

@@ -96,6 +96,25 @@ struct ObstacleChange {
   friend bool operator==(const ObstacleChange&, const ObstacleChange&) = default;
 };
 
+/// A place marked on the map: a robot's goal, the destination of a route search, a start.
+struct MarkerRecord {
+  std::string kind = "goal";  ///< "goal", "start" or "destination" (drawn differently)
+  Vec2 position;              ///< world [m]
+  int robot = -1;             ///< robot id it belongs to (drawn in its colour); -1 = none
+  std::string label;          ///< shown on hover and in the legend, e.g. "goal of robot 3"
+  friend bool operator==(const MarkerRecord&, const MarkerRecord&) = default;
+};
+
+/// Something that happened at time t ("route found", "obstacle change", "repair", "robot killed"):
+/// the page lists events on a track under the time slider; a click jumps to the event.
+struct EventRecord {
+  double t = 0.0;    ///< [s]
+  std::string kind;  ///< short category, e.g. "route", "change", "repair", "kill", "arrival"
+  std::string text;  ///< one sentence, shown as tooltip and in the event list
+  int robot = -1;    ///< robot id concerned; -1 = none
+  friend bool operator==(const EventRecord&, const EventRecord&) = default;
+};
+
 enum class PlotKind { kLine, kBar };
 
 /// One series of a plot. Line plots: x and y of equal length. Bar plots: y holds one value per
@@ -130,10 +149,25 @@ struct Recording {
   std::vector<PathRecord> paths;
   std::vector<MessageRecord> messages;
   std::vector<ObstacleChange> obstacle_changes;
+  std::vector<MarkerRecord> markers;
+  std::vector<EventRecord> events;
   std::vector<Plot> plots;
   double message_display_s = 0.5;  ///< [s] how long a message line stays visible, > 0
+  /// Exploration: when each cell of `map` becomes known. Empty (the default): the whole map is
+  /// shown from the start. Otherwise of the map's size; k >= 0: the cell shows its map value from
+  /// t = k * reveal_period_s on (unknown grey before); -1: never known.
+  GridMap<std::int32_t> reveal;
+  double reveal_period_s = 0.1;  ///< [s], > 0
+  /// Graph layers that appear during the run (a tree built at time t): graphs[graph] is drawn
+  /// from t on; graphs not named here are drawn all the time. In JSON: graphs[i].shown_from.
+  struct GraphAppearance {
+    std::size_t graph = 0;
+    double t = 0.0;  ///< [s]
+    friend bool operator==(const GraphAppearance&, const GraphAppearance&) = default;
+  };
+  std::vector<GraphAppearance> graph_appearances;
 
-  /// [first, last] time over tracks, messages and changes; {0, 0} when nothing is timed.
+  /// [first, last] time over tracks, messages, changes and events; {0, 0} when nothing is timed.
   [[nodiscard]] double start_time() const;
   [[nodiscard]] double end_time() const;
 

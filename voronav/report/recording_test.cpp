@@ -88,6 +88,74 @@ TEST(Recording, RandomRastersRoundTrip) {
   }
 }
 
+// Markers, events, reveal times and a graph that appears at t: the fields of issue 20.
+Recording with_story() {
+  Recording r = small();
+  r.graphs.push_back({"tree", "#9467bd", true, {{0, {1.2, -1.8}, "root"}, {1, {2.0, -1.2}, ""}},
+                      {{0, 1}}});
+  r.graph_appearances.push_back({0, 0.75});
+  r.markers.push_back({"goal", {1.6, -1.8}, 7, "goal of a"});
+  r.markers.push_back({"destination", {2.2, -1.2}, -1, "destination"});
+  r.events.push_back({1.5, "change", "a cell becomes blocked", -1});
+  r.events.push_back({4.0, "arrival", "a arrives", 7});
+  r.reveal = GridMap<std::int32_t>(r.map.geometry(), 0);
+  r.reveal[Cell{2, 1}] = -1;
+  r.reveal[Cell{1, 1}] = 12;
+  r.reveal_period_s = 0.25;
+  return r;
+}
+
+TEST(Recording, MarkersEventsRevealAndGraphTimesRoundTrip) {
+  const Recording r = with_story();
+  const std::string json = to_json(r);
+  EXPECT_NE(json.find("\"shown_from\":0.75"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"reveal\":{\"cells\":[0,4,12,1,-1,1],\"period_s\":0.25}"),
+            std::string::npos)
+      << json;
+  const Recording back = from_json(json);
+  EXPECT_EQ(back, r);
+  EXPECT_EQ(back.markers[1].robot, -1);
+  EXPECT_EQ(back.events[1].robot, 7);
+  // The last event lies after every pose: the replay runs until it.
+  EXPECT_DOUBLE_EQ(back.end_time(), 4.0);
+}
+
+TEST(Recording, BadMarkersEventsAndRevealAreRejected) {
+  const auto fails_with = [](Recording r, const std::string& what) {
+    try {
+      (void)to_json(r);
+      ADD_FAILURE() << "accepted; expected an error naming " << what;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  Recording r = with_story();
+  r.markers[0].kind = "flag";
+  fails_with(r, "markers[0].kind");
+  r = with_story();
+  r.markers[0].robot = 3;
+  fails_with(r, "markers[0].robot");
+  r = with_story();
+  r.events[1].robot = 8;
+  fails_with(r, "events[1].robot");
+  r = with_story();
+  r.events[0].t = std::numeric_limits<double>::quiet_NaN();
+  fails_with(r, "events[0].t");
+  r = with_story();
+  r.reveal = GridMap<std::int32_t>(GridGeometry{2, 2, 0.5, {}}, 0);
+  fails_with(r, "reveal.cells");
+  r = with_story();
+  r.reveal[Cell{0, 0}] = -2;
+  fails_with(r, "reveal.cells");
+  r = with_story();
+  r.graph_appearances[0].graph = 5;
+  fails_with(r, "graph_appearances[0]");
+  EXPECT_THROW((void)from_json(R"({"format":"voronav-recording","version":1,
+      "map":{"width":1,"height":1,"resolution":1,"occupancy":[0,1]},
+      "events":[{"t":1}]})"),
+               Error);
+}
+
 TEST(Recording, TimesSpanTracksMessagesAndChanges) {
   const Recording r = small();
   EXPECT_DOUBLE_EQ(r.start_time(), 0.0);

@@ -82,7 +82,10 @@ void draw_legend(cairo_t* cr, const std::vector<std::pair<std::string, Color>>& 
   for (const auto& [name, c] : entries) {
     cairo_rectangle(cr, x0 + 6, y + 3, 16, 10);
     set_color(cr, c);
-    cairo_fill(cr);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgba(cr, 0.45, 0.45, 0.45, 1);  // a thin frame, so white "free" shows
+    cairo_set_line_width(cr, 0.6);
+    cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     cairo_move_to(cr, x0 + 28, y + 12.5);
     cairo_show_text(cr, name.c_str());
