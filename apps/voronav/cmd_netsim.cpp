@@ -117,6 +117,35 @@ nlohmann::json summary_json(const sim::Summary& s) {
           {"gamma_bytes", s.gamma_bytes}};
 }
 
+/// Which mechanism produced the results (issue #13): who found the routes, what was lost, which
+/// repairs ran, whether the obstacle changes hit the route in use; route and driving lengths.
+nlohmann::json mechanism_json(const std::vector<sim::NetSimMetrics>& runs) {
+  nlohmann::json by = {{"relays", 0}, {"source_alone", 0}, {"none", 0}};
+  int lost = 0, repairs = 0, change_runs = 0, hit = 0, ok = 0;
+  double route = 0.0, source = 0.0, relay = 0.0;
+  for (const auto& r : runs) {
+    by[std::string(sim::to_string(r.route_found_by))] =
+        by[std::string(sim::to_string(r.route_found_by))].get<int>() + 1;
+    lost += r.paths_lost;
+    repairs += r.repairs_executed;
+    if (r.changes_applied > 0) {
+      ++change_runs;
+      hit += r.changes_on_route > 0 ? 1 : 0;
+    }
+    if (r.success) {
+      ++ok;
+      route += r.route_length_m;
+      source += r.source_travel_m;
+      relay += r.relay_travel_m;
+    }
+  }
+  const double n = std::max(ok, 1);
+  return {{"route_found_by", by},          {"paths_lost", lost},
+          {"repairs_executed", repairs},   {"change_runs", change_runs},
+          {"change_runs_on_route", hit},   {"route_length_m", route / n},
+          {"source_travel_m", source / n}, {"relay_travel_m", relay / n}};
+}
+
 std::vector<sim::Method> methods_of(const std::string& method) {
   if (method == "both") return {sim::Method::kCentralized, sim::Method::kDecentralized};
   return {sim::parse_method(method)};
@@ -279,6 +308,15 @@ void run(const NetsimArgs& a) {
                          {"travel_m", r.travel_m},
                          {"route_length_m", r.route_length_m},
                          {"source_travel_m", r.source_travel_m},
+                         {"relay_travel_m", r.relay_travel_m},
+                         {"route_found_by", std::string(sim::to_string(r.route_found_by))},
+                         {"route_robots", r.route_robots},
+                         {"paths_lost", r.paths_lost},
+                         {"repairs_executed", r.repairs_executed},
+                         {"changes", sc.changes.size()},
+                         {"changes_applied", r.changes_applied},
+                         {"changes_on_route", r.changes_on_route},
+                         {"replans", r.replans},
                          {"search_attempts", r.search_attempts},
                          {"repairs", r.repairs},
                          {"simulated_s", r.simulated_s},
@@ -286,6 +324,14 @@ void run(const NetsimArgs& a) {
       per_run.back().update(extra);
     }
     out[std::string(sim::to_string(m))] = summary_json(sim::summarize(all));
+    out[std::string(sim::to_string(m))].update(mechanism_json(all));
+    auto& mine = out[std::string(sim::to_string(m))]["per_run"] = nlohmann::json::array();
+    for (const auto& pr : per_run)
+      if (pr["method"] == std::string(sim::to_string(m))) {
+        auto q = pr;
+        q.erase("robots");
+        mine.push_back(q);
+      }
     out[std::string(sim::to_string(m))]["transport"] = a.transport;
     out[std::string(sim::to_string(m))]["wall_s"] =
         wall[std::string(sim::to_string(m))] / plan.runs;
@@ -296,9 +342,9 @@ void run(const NetsimArgs& a) {
     std::ofstream f(std::filesystem::path(a.out) / ("netsim_" + plan.label + ".json"));
     if (!f) throw Error(a.out, 0, "cannot write the results");
     f << nlohmann::json{{"summary", out}, {"runs", per_run}}.dump(2) << "\n";
-    // The replay page: run 2 (the first with an obstacle change, Table 7) of the last method,
+    // The replay page: run 5 (the first with an obstacle change, Table 7) of the last method,
     // run again with recording on.
-    const auto sc = plan.scenario(std::min(plan.runs, 2));
+    const auto sc = plan.scenario(std::min(plan.runs, 5));
     sim::NetSimOptions o = plan.options;
     o.method = methods.back();
     o.record = true;

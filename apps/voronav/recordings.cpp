@@ -163,8 +163,11 @@ report::Recording netsim_recording(const sim::NetSimScenario& sc, const sim::Net
     rec.paths.push_back(
         {static_cast<int>(sc.source), std::max(0.0, m.route_time_s), "route", in.route});
   for (const auto& c : sc.changes)
-    if (m.route_time_s >= 0)
+    if (c.at_s >= 0.0) {  // at a simulated time (the paper runs), else after the first route
+      if (c.at_s <= m.simulated_s) rec.obstacle_changes.push_back({c.at_s, c.cells, c.value});
+    } else if (m.route_time_s >= 0) {
       rec.obstacle_changes.push_back({m.route_time_s + c.after_route_s, c.cells, c.value});
+    }
   const int source_id = static_cast<int>(sc.source);
   rec.markers.push_back({"destination", sc.destination, -1, "destination of the source"});
   rec.markers.push_back({"start", sc.robots[sc.source], source_id, "start of the source"});

@@ -71,6 +71,13 @@ std::string metrics_to_json(const sim::NetSimMetrics& m) {
                   {"repairs", m.repairs},
                   {"replans", m.replans},
                   {"corrupt_packets", m.corrupt_packets},
+                  {"route_found_by", std::string(sim::to_string(m.route_found_by))},
+                  {"route_robots", m.route_robots},
+                  {"paths_lost", m.paths_lost},
+                  {"repairs_executed", m.repairs_executed},
+                  {"changes_on_route", m.changes_on_route},
+                  {"changes_applied", m.changes_applied},
+                  {"relay_travel_m", m.relay_travel_m},
                   {"simulated_s", m.simulated_s},
                   {"wall_s", m.wall_s},
                   {"robots", robots}};
@@ -102,6 +109,13 @@ sim::NetSimMetrics metrics_from_json(const std::string& text) {
     m.repairs = j.at("repairs").get<int>();
     m.replans = j.at("replans").get<int>();
     m.corrupt_packets = j.at("corrupt_packets").get<std::uint64_t>();
+    m.route_found_by = sim::parse_route_found_by(j.at("route_found_by").get<std::string>());
+    m.route_robots = j.at("route_robots").get<int>();
+    m.paths_lost = j.at("paths_lost").get<int>();
+    m.repairs_executed = j.at("repairs_executed").get<int>();
+    m.changes_on_route = j.at("changes_on_route").get<int>();
+    m.changes_applied = j.at("changes_applied").get<int>();
+    m.relay_travel_m = j.at("relay_travel_m").get<double>();
     m.simulated_s = j.at("simulated_s").get<double>();
     m.wall_s = j.at("wall_s").get<double>();
     for (const auto& r : j.at("robots"))

@@ -221,6 +221,10 @@ int run_world_process(const WorldProcessOptions& o) {
   }
   auto m = sim::aggregate_metrics(reports, sc.source, opts.method);
   m.simulated_s = step * opts.dt_s;
+  m.changes_applied =
+      static_cast<int>(sim::changes_due(sc, last.count(source) ? last[source].route_time_s : -1.0,
+                                        step * opts.dt_s, 0)
+                           .size());
   m.wall_s = steady_s() - wall0;
   std::sort(dead.begin(), dead.end());
   const json out = {{"metrics", json::parse(metrics_to_json(m))},

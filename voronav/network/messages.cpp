@@ -186,6 +186,9 @@ void encode_payload(Writer& w, const PathMessage& m) {
   w.ids(m.relays);
   w.points(m.whole_path);
   w.u32(m.exit_index);
+  w.ids(m.owners);
+  w.ids(m.carriers);
+  w.vec(m.toward);
 }
 void encode_payload(Writer& w, const RepairMessage& m) {
   w.id(m.source);
@@ -253,6 +256,11 @@ Payload decode_payload(MessageType t, Reader& r) {
       m.relays = r.ids("relays");
       m.whole_path = r.points("whole path");
       m.exit_index = r.u32("exit index");
+      m.owners = r.ids("owners");
+      if (!m.owners.empty() && m.owners.size() != m.whole_path.size())
+        r.fail("owners must be empty or one per whole path point");
+      m.carriers = r.ids("carriers");
+      m.toward = r.vec("toward");
       return m;
     }
     case MessageType::kRepair: {

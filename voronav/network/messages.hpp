@@ -60,13 +60,20 @@ struct SearchMessage {
 };
 
 /// Table 3: Path Message <- Relay Robots, a Whole Path. `exit_index` is the index of the
-/// receiver's open point (as sent in its Search) where `whole_path` continues.
+/// receiver's open point (as sent in its Search) where `whole_path` continues. Added for
+/// measurement and delivery (not in the paper): `owners` names the robot that sensed each point
+/// of `whole_path` (empty, or one per point); `carriers` are the robots that carried the message
+/// hop by hop when the next relay was out of range (loop guard of the multi-hop fallback) and
+/// `toward` is where that relay was last seen.
 struct PathMessage {
   RobotId source;
   std::uint32_t num = 0;
   std::vector<RobotId> relays;  ///< relays still to traverse toward the source
   std::vector<VoronoiPoint> whole_path;
   std::uint32_t exit_index = 0;
+  std::vector<RobotId> owners;
+  std::vector<RobotId> carriers;
+  Vec2 toward;
   friend bool operator==(const PathMessage&, const PathMessage&) = default;
 };
 

@@ -22,8 +22,14 @@ Envelope search_envelope() {
 
 std::vector<Envelope> all_kinds() {
   std::vector<Envelope> v{search_envelope()};
-  PathMessage p{
-      RobotId{1}, 2, {RobotId{1}, RobotId{4}}, {{{1, 1}, 1.0f, 0.0f}, {{2, 2}, 0.5f, 1.5f}}, 1};
+  PathMessage p{RobotId{1},
+                2,
+                {RobotId{1}, RobotId{4}},
+                {{{1, 1}, 1.0f, 0.0f}, {{2, 2}, 0.5f, 1.5f}},
+                1,
+                {RobotId{4}, RobotId{7}},
+                {RobotId{8}},
+                {3.5, -1.0}};
   v.push_back({Header{RobotId{4}, RobotId{1}, RobotId{6}, 5, 1}, p});
   RepairMessage r{RobotId{1}, 3, {RobotId{2}}, {{{0, 0}, 1, 0}, {{1, 0}, 1, 1}, {{2, 0}, 1, 2}},
                   0,          2};

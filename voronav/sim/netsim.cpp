@@ -42,6 +42,8 @@ void NetSimScenario::validate() const {
   for (const auto& ch : changes) {
     if (!(ch.after_route_s >= 0.0) || !std::isfinite(ch.after_route_s))
       throw Error("scenario.changes", 0, "after_route_s must be a finite number >= 0");
+    if (!std::isfinite(ch.at_s))
+      throw Error("scenario.changes", 0, "at_s must be a finite number (< 0: unused)");
     for (Cell c : ch.cells)
       if (!world.contains(c)) throw Error("scenario.changes", 0, "change cell outside the map");
   }
@@ -110,9 +112,13 @@ ChangeBox apply_change(BinaryGrid& truth, const ObstacleChange& change) {
 std::vector<std::size_t> changes_due(const NetSimScenario& scenario, double first_route_s,
                                      double now_s, std::size_t applied) {
   std::vector<std::size_t> out;
-  if (first_route_s < 0.0) return out;
   for (std::size_t i = applied; i < scenario.changes.size(); ++i) {
-    if (now_s + 1e-9 < first_route_s + scenario.changes[i].after_route_s) break;
+    const auto& c = scenario.changes[i];
+    if (c.at_s >= 0.0) {
+      if (now_s + 1e-9 < c.at_s) break;
+    } else if (first_route_s < 0.0 || now_s + 1e-9 < first_route_s + c.after_route_s) {
+      break;
+    }
     out.push_back(i);
   }
   return out;
@@ -179,6 +185,7 @@ NetSimResult run_netsim(const NetSimScenario& scenario, const NetSimOptions& opt
     reports.push_back(a->report());
   res.metrics = aggregate_metrics(reports, scenario.source, options.method);
   res.metrics.simulated_s = now;
+  res.metrics.changes_applied = static_cast<int>(applied);
   res.metrics.wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   if (options.record) {

@@ -7,7 +7,9 @@
 //    relays, each waiting a little, selecting the shortest, saving it and prepending its own
 //    piece (Table 3); a relay that senses a break sends Repair to its neighbours, any of which
 //    that knows a detour answers (Tables 4–5). Added for a real network: hop-by-hop LinkAck
-//    retries, source retries with a new Num after a timeout, duplicate suppression, a hop bound.
+//    retries, a source retry that re-sends the same Search (same Num: nothing is cancelled),
+//    a multi-hop fallback for Paths whose next relay is out of range, duplicate suppression, a
+//    hop bound.
 //  - the centralized baseline: the source floods a Request, every robot answers with an Ack
 //    holding its whole local map (routed back hop by hop), the source plans A* over the merged
 //    map with unknown = free, walks and senses by itself, replans on what it sees; a robot that
@@ -32,14 +34,23 @@
 namespace voronav::sim {
 
 enum class Method { kCentralized, kDecentralized };
+/// Who produced the route the source drives (issue #13): `kRelays` when it holds open points
+/// sensed by other robots and the source had not itself sensed a way to the destination when it
+/// arrived; `kSourceAlone` otherwise; `kNone` when the source never had a route.
+enum class RouteFoundBy : std::uint8_t { kNone, kRelays, kSourceAlone };
+[[nodiscard]] std::string_view to_string(RouteFoundBy b);
+/// Inverse of to_string; throws voronav::Error.
+[[nodiscard]] RouteFoundBy parse_route_found_by(std::string_view s);
 [[nodiscard]] std::string_view to_string(Method m);
 /// "centralized" / "decentralized"; throws voronav::Error otherwise.
 [[nodiscard]] Method parse_method(std::string_view s);
 
-/// An obstacle change (Table 7): `cells` become `value` `after_route_s` seconds after the source
-/// first has a route (so it happens while the route is in use).
+/// An obstacle change (Table 7): `cells` become `value` at the simulated time `at_s` when it is
+/// >= 0 (the same time for both methods; the paper runs use this), else `after_route_s` seconds
+/// after the source first has a route.
 struct ObstacleChange {
   double after_route_s = 0.0;
+  double at_s = -1.0;
   std::vector<Cell> cells;
   std::int8_t value = kOccupied;
 };
@@ -67,7 +78,10 @@ struct NetSimOptions {
   /// A robot that cannot continue a Search waits this long for one it can continue before it
   /// walks over to sense the gap itself [s].
   double bridge_wait_s = 2.0;
-  double search_timeout_s = 60.0;  ///< source retries the Search with Num+1 after this [s]
+  double search_timeout_s = 60.0;  ///< source re-sends the same Search (same Num) after this [s]
+  /// From its second attempt on the source also walks toward the destination itself (as the
+  /// centralized source does) while it waits; off by default: the source waits for the relays.
+  bool source_walks_on_retry = false;
   // Scale options (docs/reproductions/networked.md, "Scale"). Off by default: the Table 6/7
   // results are those of the protocol without them (with them, scenarios 1 and 3 lose runs);
   // scale_options() turns on the set the scale runs use.
@@ -84,10 +98,9 @@ struct NetSimOptions {
   /// The source's start point (its own position, a pseudo open point) may join the source's own
   /// open points by a straight move its map knows is free, as own points join each other.
   bool source_straight_start = false;
-  /// A continuing robot counts as the frontier (and walks to the destination itself) when no
-  /// radio neighbour is > 1 m closer to the destination than its nearest open point, the rule by
-  /// which a receiver decides to bridge; false: than the robot's position (older rule, under
-  /// which a Search could stop where no neighbour would bridge and the sender would not walk).
+  /// Ignored (kept so older scenario files load): the hand-off rule is now always the one rule
+  /// of decentralized_search.cpp (a neighbour > 1 m closer than the sender's nearest sent point
+  /// takes the Search on), which cannot deadlock (issue #13).
   bool frontier_by_points = false;
   /// When a robot's walk (bridge, destination) cannot be planned in the window around its two
   /// ends (known walls close it), plan again on a window holding the robot's whole local map.
@@ -148,7 +161,8 @@ struct NetSimMetrics {
   double arrival_time_s = -1.0;  ///< when the source reached the destination (-1 never)
   double travel_m = 0.0;         ///< eq. 3: sum over robots
   double source_travel_m = 0.0;
-  double route_length_m = 0.0;  ///< eq. 2 length of the first route
+  double route_length_m = 0.0;  ///< eq. 2: the first route the source drives, from where it was
+  double relay_travel_m = 0.0;  ///< travel of every robot but the source
   std::uint64_t traffic_bytes = 0;
   std::uint64_t messages = 0;
   std::uint64_t computation = 0;  ///< eq. 8/9: total work units
@@ -163,6 +177,14 @@ struct NetSimMetrics {
   int repairs = 0;  ///< breaks handled (decentralized Repair / centralized re-request)
   int replans = 0;  ///< centralized A* plans
   std::uint64_t corrupt_packets = 0;
+  /// Who produced the route (robot_agent.hpp, RouteFoundBy; the centralized source always
+  /// plans alone, so its runs say source_alone).
+  RouteFoundBy route_found_by = RouteFoundBy::kNone;
+  int route_robots = 0;      ///< robots whose open points are on the first route
+  int paths_lost = 0;        ///< Path messages that could not be delivered
+  int repairs_executed = 0;  ///< local Repairs (Tables 4–5) that produced a detour
+  int changes_on_route = 0;  ///< obstacle changes that touched the source's route ahead
+  int changes_applied = 0;   ///< obstacle changes that happened during the run
   double simulated_s = 0.0;
   double wall_s = 0.0;
   std::vector<RobotMetrics> robots;

@@ -1,7 +1,10 @@
 // RobotAgent: one robot of the networked-robot experiments of seed 000, on its own: its pose, its
 // local map (exact 3 m sensing), its Voronoi points and its whole share of the protocol, both the
 // decentralized one (Search / Path / Repair, Tables 1–5) and the centralized baseline (Request /
-// Ack / Notify), talking to the other robots only through a network::Transport. The in-process
+// Ack / Notify), talking to the other robots only through a network::Transport. The step and
+// the shared machinery are in robot_agent.cpp; each protocol has its own units:
+// decentralized_search.cpp (Tables 1–2), decentralized_path.cpp (Table 3),
+// decentralized_repair.cpp (Tables 4–5), centralized_protocol.cpp (the baseline). The in-process
 // simulator (run_netsim) steps many agents over the simulated radio; a robot process
 // (voronav robot, voronav/dds) steps one agent over Cyclone DDS. Both follow the same step, so the
 // same scenario gives the same route and the same messages:
@@ -17,6 +20,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string_view>
 #include <unordered_set>
 #include <vector>
 
@@ -51,7 +55,13 @@ struct AgentReport {
   bool arrived = false;
   double route_time_s = -1.0;
   double arrival_time_s = -1.0;
-  double route_length_m = 0.0;
+  double route_length_m = 0.0;  ///< eq. 2: open-point path the source drives (first route)
+  RouteFoundBy found_by = RouteFoundBy::kNone;
+  int route_robots = 0;  ///< robots whose open points are on the first route
+  // Every robot.
+  int paths_lost = 0;        ///< Path messages that could not be delivered (counted, not dropped)
+  int repairs_executed = 0;  ///< local Repairs (Tables 4–5) that produced a detour
+  int changes_on_route = 0;  ///< (source) obstacle changes that touched its route ahead
 };
 
 /// Sums the robots' reports (eq. 3–9) into the metrics of a run; `source` is the source's index.
@@ -91,11 +101,12 @@ class RobotAgent {
  private:
   struct SenderInfo {
     network::RobotId id;
+    Vec2 pos;  // where the sender was when its Search arrived (a Path goes back toward it)
     std::vector<network::RobotId> relays;
     std::size_t offset = 0;  // first of its points in s_in.open_points
     std::size_t count = 0;
   };
-  enum class Walk { kIdle, kBridge, kDestination };
+  enum class Walk { kIdle, kBridge, kDestination, kBack };
   struct State {
     network::RobotId id;
     Vec2 pos;
@@ -124,6 +135,16 @@ class RobotAgent {
     double path_deadline = -1.0;
     bool path_forwarded = false;
     std::optional<network::PathMessage> saved;
+    double saved_cost = 0.0;  // length of the saved Path from the source
+    // A Path this robot must deliver whose next relay is out of range and no neighbour is closer
+    // to it: the robot walks back toward where that relay was (multi-hop fallback, last resort).
+    std::optional<network::PathMessage> pending;
+    double pending_since = -1.0;
+    bool walk_map_changed = false;  // the map changed since the last walk check
+    // Where a relay walked for the current search (every metre): driven, so known free; its
+    // points join the robot's open points (a walk senses a strip whose Voronoi points alone
+    // need not connect).
+    std::vector<Vec2> walk_trail;
     std::unordered_set<std::uint32_t> repairs_seen;
     std::uint32_t repair_counter = 0;
     // Centralized.
@@ -183,10 +204,20 @@ class RobotAgent {
   };
   [[nodiscard]] Piece own_piece(std::size_t last) const;
   void answer_path();
+  [[nodiscard]] double reference_distance() const;
+  [[nodiscard]] bool hands_off_to(Vec2 robot, double sender_reference, double slack) const;
+  void consider_bridge(const network::SearchMessage& m);
+  void retry_search();
+  [[nodiscard]] bool source_sees_way();
+  [[nodiscard]] std::size_t own_index_at(Vec2 p) const;
   // decentralized: Path (Table 3)
+  void deliver_path(network::PathMessage p, network::RobotId to, Vec2 toward, bool carrier);
+  void pending_step();
+  [[nodiscard]] std::optional<Vec2> neighbour_position(network::RobotId id);
   void on(const network::Header& h, const network::PathMessage& m);
   void select_path();
-  void finish_route(const network::PathMessage& p);
+  void finish_route(const network::PathMessage& p, bool own_answer);
+  void count_change_on_route(Vec2 lo, Vec2 hi);
   [[nodiscard]] std::size_t next_route_index() const;
   void set_source_waypoints(std::size_t from);
   // decentralized: Repair (Tables 4-5)
@@ -200,6 +231,7 @@ class RobotAgent {
   void on_repair_path(network::PathMessage m);
   void splice_route(const std::vector<network::VoronoiPoint>& whole);
   void check_source_route();
+  bool replan_to_route();
   [[nodiscard]] std::uint32_t next_repair_num();
   // centralized baseline
   void start_request();
@@ -223,10 +255,12 @@ class RobotAgent {
   std::uint32_t search_num_ = 0;
   double search_deadline_ = 0.0;  // retry the Search (Num + 1) when no route by then
   std::vector<network::VoronoiPoint> route_;
+  std::vector<network::RobotId> route_owners_;  // who sensed each route_ point (first route)
   std::size_t route_base_ = 0;
   std::vector<Vec2> trail_;     // source positions since its latest Search
   std::size_t back_steps_ = 0;  // waypoints of the way back along the trail
   double blocked_since_ = -1.0;
+  Vec2 walk_prev;  // position before this step's move
   std::uint32_t repair_seq_ = 0;
   bool collecting_ = false;
   double last_ack_ = 0.0;

@@ -274,11 +274,15 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
 
 ObstacleChange read_change(const Reader& rd, const YAML::Node& n, const std::string& what,
                            const OccupancyGrid& world) {
-  rd.keys(n, what, {"after_route_s", "value", "cells", "rect"});
+  rd.keys(n, what, {"after_route_s", "at_s", "value", "cells", "rect"});
   ObstacleChange ch;
+  // When: at a simulated time (at_s, the same for both methods) or after the first route.
   const auto t = n["after_route_s"];
-  if (!t) rd.fail(n, what + ": missing key 'after_route_s'");
-  ch.after_route_s = rd.nonneg(t, what + ".after_route_s");
+  const auto at = n["at_s"];
+  if (!t && !at) rd.fail(n, what + ": missing key 'at_s' or 'after_route_s'");
+  if (t && at) rd.fail(n, what + ": give either 'at_s' or 'after_route_s', not both");
+  if (t) ch.after_route_s = rd.nonneg(t, what + ".after_route_s");
+  if (at) ch.at_s = rd.nonneg(at, what + ".at_s");
   if (const auto v = n["value"]) {
     const std::string s = v.IsScalar() ? v.Scalar() : "";
     if (s == "occupied")
@@ -417,8 +421,11 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
     out << "  - " << fmt(p) << "\n";
   out << "changes:" << (sc.changes.empty() ? " []" : "") << "\n";
   for (const auto& ch : sc.changes) {
-    out << "  - after_route_s: " << fmt(ch.after_route_s) << "\n"
-        << "    value: " << (ch.value == kFree ? "free" : "occupied") << "\n"
+    if (ch.at_s >= 0.0)
+      out << "  - at_s: " << fmt(ch.at_s) << "\n";
+    else
+      out << "  - after_route_s: " << fmt(ch.after_route_s) << "\n";
+    out << "    value: " << (ch.value == kFree ? "free" : "occupied") << "\n"
         << "    cells: [";
     for (std::size_t i = 0; i < ch.cells.size(); ++i)
       out << (i ? ", " : "") << "[" << ch.cells[i].x << ", " << ch.cells[i].y << "]";

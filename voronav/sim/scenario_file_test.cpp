@@ -67,9 +67,16 @@ void expect_same_options(const NetSimOptions& a, const NetSimOptions& b) {
 
 TEST(ScenarioFile, PaperRunWithEveryOptionSetRoundTripsExactly) {
   const fs::path d = temp_dir();
-  NetSimScenario sc = make_paper_run(2, 9, 1);
-  ASSERT_EQ(sc.changes.size(), 2u);
-  sc.changes.push_back({0.1 + 0.2, {sc.changes[0].cells.front()}, kFree});  // not a short decimal
+  NetSimScenario sc = make_paper_run(2, 1, 1);
+  ObstacleChange at;  // at a simulated time (the paper runs' changes)
+  at.at_s = 12.5;
+  at.cells = {Cell{3, 4}, Cell{3, 5}};
+  sc.changes.push_back(at);
+  ObstacleChange after;  // after the first route, not a short decimal
+  after.after_route_s = 0.1 + 0.2;
+  after.cells = {Cell{7, 8}};
+  after.value = kFree;
+  sc.changes.push_back(after);
   sc.source = 3;
   NetSimOptions o;
   o.method = Method::kCentralized;
@@ -121,6 +128,7 @@ TEST(ScenarioFile, PaperRunWithEveryOptionSetRoundTripsExactly) {
   ASSERT_EQ(f.scenario.changes.size(), sc.changes.size());
   for (std::size_t i = 0; i < sc.changes.size(); ++i) {
     EXPECT_EQ(f.scenario.changes[i].after_route_s, sc.changes[i].after_route_s);
+    EXPECT_EQ(f.scenario.changes[i].at_s, sc.changes[i].at_s);
     EXPECT_EQ(f.scenario.changes[i].cells, sc.changes[i].cells);
     EXPECT_EQ(f.scenario.changes[i].value, sc.changes[i].value);
   }

@@ -151,12 +151,109 @@ NetSimScenario place_robots(const OfficeWorld& world, const PlacementOptions& o)
           continue;
         changed = std::move(trial);
         ++made;
-        sc.changes.push_back({o.change_every_s * made, d.cells, kOccupied});
+        ObstacleChange ch;
+        ch.after_route_s = o.change_every_s * made;
+        ch.cells = d.cells;
+        sc.changes.push_back(std::move(ch));
         break;
       }
     }
   }
   return std::move(p.scenario);
+}
+
+namespace {
+
+/// The source's trajectory in a change-free run of one method (the probe of time_changes).
+struct Probe {
+  double route_s = -1.0, end_s = 0.0;
+  std::vector<double> t;
+  std::vector<Vec2> pos;
+  std::vector<double> along;  ///< distance driven up to pos[i]
+};
+
+Probe probe(const NetSimScenario& base, Method m) {
+  NetSimOptions o;
+  o.method = m;
+  o.record = true;
+  const auto res = run_netsim(base, o);
+  Probe p;
+  p.route_s = res.metrics.route_time_s;
+  p.end_s = res.metrics.success ? res.metrics.arrival_time_s : res.metrics.simulated_s;
+  double along = 0.0;
+  for (const auto& st : res.recording.steps) {
+    const Vec2 q = st.positions[base.source];
+    if (!p.pos.empty()) along += distance(p.pos.back(), q);
+    p.t.push_back(st.t_s);
+    p.pos.push_back(q);
+    p.along.push_back(along);
+  }
+  return p;
+}
+
+/// Whether `door` lies on the probe's trajectory after time t, at least `ahead_m` ahead of where
+/// the source is then (0.7 m tolerance); returns the source position at t.
+std::optional<Vec2> ahead_on(const Probe& p, double t, Vec2 door, double ahead_m) {
+  std::size_t k = 0;
+  while (k < p.t.size() && p.t[k] + 1e-9 < t)
+    ++k;
+  if (k >= p.t.size()) return std::nullopt;
+  for (std::size_t i = k; i < p.pos.size(); ++i)
+    if (p.along[i] - p.along[k] >= ahead_m && distance(p.pos[i], door) < 0.7) return p.pos[k];
+  return std::nullopt;
+}
+
+}  // namespace
+
+void time_changes_on_routes(const OfficeWorld& world, NetSimScenario& sc, int changes,
+                            double every_s, double robot_radius_m) {
+  sc.changes.clear();
+  if (changes <= 0) return;
+  const Probe pc = probe(sc, Method::kCentralized), pd = probe(sc, Method::kDecentralized);
+  if (pc.route_s < 0.0 || pd.route_s < 0.0) return;  // no route to change: no changes
+  const auto& g = world.grid.geometry();
+  const BinaryGrid truth = binarize(world.grid);
+  BinaryGrid changed = truth;
+  const auto dest = g.world_to_cell(sc.destination);
+  // Pass 0: while both routes are in use. Pass 1 (only when pass 0 finds nothing, e.g. the
+  // centralized source arrives before the decentralized one has its route): while the
+  // decentralized route is in use, at a door that also lies on the centralized route.
+  for (int pass = 0; pass < 2 && sc.changes.empty(); ++pass) {
+    const double end = (pass == 0 ? std::min(pc.end_s, pd.end_s) : pd.end_s) - 1.0;
+    double t =
+        std::ceil(((pass == 0 ? std::max(pc.route_s, pd.route_s) : pd.route_s) + 1.0) * 2.0) / 2.0;
+    for (int k = 0; k < changes && t <= end; ++k) {
+      bool made = false;
+      for (; t <= end && !made; t += 0.5) {
+        for (const auto& d : world.doors) {
+          bool used = false;
+          for (const auto& ch : sc.changes)
+            used |= ch.cells == d.cells;
+          if (used) continue;
+          const auto a =
+              pass == 0 ? ahead_on(pc, t, d.centre, 4.0) : ahead_on(pc, 0.0, d.centre, 0.0);
+          const auto b = ahead_on(pd, t, d.centre, 4.0);
+          if (!a || !b) continue;
+          BinaryGrid trial = changed;
+          for (Cell c : d.cells)
+            trial[c] = 1;
+          const auto pg = planning::make_planning_grid(trial, robot_radius_m + 0.1);
+          const auto ca = g.world_to_cell(*a), cb = g.world_to_cell(*b);
+          if (!ca || !cb || !dest || pg[*ca] || pg[*cb] || !truth_plan(pg, *ca, *dest).ok() ||
+              !truth_plan(pg, *cb, *dest).ok())
+            continue;
+          changed = std::move(trial);
+          ObstacleChange ch;
+          ch.at_s = t;
+          ch.cells = d.cells;
+          sc.changes.push_back(std::move(ch));
+          made = true;
+          break;
+        }
+      }
+      if (!sc.changes.empty()) t = std::max(t, sc.changes.back().at_s + every_s);
+    }
+  }
 }
 
 NetSimScenario make_paper_run(int id, int run, std::uint64_t seed) {
@@ -168,9 +265,10 @@ NetSimScenario make_paper_run(int id, int run, std::uint64_t seed) {
   const auto world = make_office_world(wo);
   PlacementOptions po;
   po.robots = ps.robots;
-  po.changes = (run - 1) / 4;
   po.seed = seed * 7919 + static_cast<std::uint64_t>(id * 16 + (run - 1) % 4);
-  return place_robots(world, po);
+  auto sc = place_robots(world, po);
+  time_changes_on_routes(world, sc, (run - 1) / 4, po.change_every_s, po.robot_radius_m);
+  return sc;
 }
 
 NetSimScenario make_scale_run(int robots, double size_m, std::uint64_t seed) {

@@ -47,7 +47,17 @@ struct PlacementOptions {
                                           const PlacementOptions& options,
                                           std::optional<Vec2> destination = std::nullopt);
 
-/// Run `run` (1..16) of Table 7 for paper scenario `id`; `seed` varies the worlds.
+/// Replaces the changes of `sc` by `changes` closed doors at simulated times (at_s) that are the
+/// same for both methods and lie on both methods' routes ahead of the source while they are in
+/// use (issue #13): runs both methods once without changes (default options), then picks the
+/// earliest time after both have a route and before either arrives at which a door lies >= 4 m
+/// ahead on both sources' trajectories and closing it keeps the destination reachable; later
+/// changes follow every_s apart. Fewer changes when no such door exists (the run records it).
+void time_changes_on_routes(const OfficeWorld& world, NetSimScenario& sc, int changes,
+                            double every_s, double robot_radius_m);
+
+/// Run `run` (1..16) of Table 7 for paper scenario `id`; `seed` varies the worlds. Runs 5..16
+/// get their changes from time_changes_on_routes.
 [[nodiscard]] NetSimScenario make_paper_run(int id, int run, std::uint64_t seed = 1);
 
 /// A square office world of side `size_m` with `robots` robots (the scale runs).

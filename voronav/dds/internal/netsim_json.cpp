@@ -36,7 +36,12 @@ json agent_report_json(const sim::AgentReport& a) {
           {"arrived", a.arrived},
           {"route_time_s", a.route_time_s},
           {"arrival_time_s", a.arrival_time_s},
-          {"route_length_m", a.route_length_m}};
+          {"route_length_m", a.route_length_m},
+          {"found_by", std::string(sim::to_string(a.found_by))},
+          {"route_robots", a.route_robots},
+          {"paths_lost", a.paths_lost},
+          {"repairs_executed", a.repairs_executed},
+          {"changes_on_route", a.changes_on_route}};
 }
 sim::AgentReport agent_report_from(const json& j) {
   sim::AgentReport a;
@@ -49,6 +54,11 @@ sim::AgentReport agent_report_from(const json& j) {
   a.route_time_s = j.at("route_time_s").get<double>();
   a.arrival_time_s = j.at("arrival_time_s").get<double>();
   a.route_length_m = j.at("route_length_m").get<double>();
+  a.found_by = sim::parse_route_found_by(j.at("found_by").get<std::string>());
+  a.route_robots = j.at("route_robots").get<int>();
+  a.paths_lost = j.at("paths_lost").get<int>();
+  a.repairs_executed = j.at("repairs_executed").get<int>();
+  a.changes_on_route = j.at("changes_on_route").get<int>();
   return a;
 }
 

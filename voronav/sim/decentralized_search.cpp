@@ -1,0 +1,479 @@
+// The decentralized method of seed 000, Tables 1–2: the source starts a Search (Num, its open
+// points, the destination, Relay Robots) and waits for Path answers; a relay continues the Search
+// through its open Voronoi points, or, when a gap in sensed space stops the chain, goes and senses
+// it on the source's behalf (figure 18). One hand-off rule decides who walks (hands_off_to), used
+// by the sender and the receiver alike, so the Search cannot stop where neither moves
+// (docs/reproductions/networked.md, "Hand-off").
+#include <algorithm>
+#include <cmath>
+
+#include "voronav/core/error.hpp"
+#include "voronav/sim/agent_internal.hpp"
+#include "voronav/sim/robot_agent.hpp"
+
+namespace voronav::sim {
+
+using namespace network;
+using namespace agent_detail;
+
+namespace {
+
+/// The hand-off margin [m]: a neighbour takes the Search on when it is this much closer to the
+/// destination than the nearest point the sender sent.
+constexpr double kHandOffM = 1.0;
+
+double nearest_to(const std::vector<VoronoiPoint>& pts, Vec2 dest) {
+  double d = kInf;
+  for (const auto& p : pts)
+    d = std::min(d, distance(p.position, dest));
+  return d;
+}
+
+bool contains(const std::vector<RobotId>& v, RobotId id) {
+  return std::find(v.begin(), v.end(), id) != v.end();
+}
+
+}  // namespace
+
+/// The source's start point (its position) as the Search's only "sender point".
+static VoronoiPoint start_point(const LocalMap& map, Vec2 pos, double radius) {
+  const double cl = clearance_at(map.grid(), pos);
+  return VoronoiPoint{pos, static_cast<float>(std::max(cl, radius + 0.05)), 0.0f};
+}
+
+// ---- Table 1: the source ----------------------------------------------------------------------
+void RobotAgent::start_search() {
+  auto& s = r_;
+  ++report_.search_attempts;
+  // Retry timeout: fixed, or longer the farther the destination.
+  search_deadline_ =
+      now_ + std::max(opt().search_timeout_s,
+                      opt().search_timeout_per_m * distance(s.pos, scen().destination));
+  trail_ = {s.pos};
+  const std::uint32_t num = ++search_num_;
+  SearchMessage pseudo;
+  pseudo.source = s.id;
+  pseudo.num = num;
+  pseudo.destination = scen().destination;
+  pseudo.open_points = {start_point(s.map, s.pos, opt().robot_radius_m)};
+  s.got_paths.clear();
+  s.path_deadline = -1.0;
+  s.path_forwarded = false;
+  process_search(s.id, pseudo, 0);
+}
+
+/// No route by the deadline: the same search goes on (same Num, nothing is reset). The source
+/// sends its Search again from where it stands, so robots that could not continue it reconsider
+/// the hand-off; with source_walks_on_retry it also walks toward the destination itself (as the
+/// centralized source does) while it keeps waiting for Path answers.
+void RobotAgent::retry_search() {
+  auto& s = r_;
+  ++report_.search_attempts;
+  search_deadline_ =
+      now_ + std::max(opt().search_timeout_s,
+                      opt().search_timeout_per_m * distance(s.pos, scen().destination));
+  s.s_in.open_points = {start_point(s.map, s.pos, opt().robot_radius_m)};
+  s.s_senders = {{s.id, s.pos, {}, 0, 1}};
+  s.s_done = false;
+  if (try_continue()) after_continue(0);
+}
+
+/// Whether the source's own map holds a way from where it stands to the destination (the search
+/// state of the Search it sent is kept when not).
+bool RobotAgent::source_sees_way() {
+  auto& r = r_;
+  const auto keep_in = r.s_in;
+  const auto keep_senders = r.s_senders;
+  const auto keep_comb = r.s_comb;
+  const auto keep_search = r.s_search;
+  const auto keep_na = r.s_na;
+  const auto keep_sent = r.s_sent;
+  r.s_in.open_points = {start_point(r.map, r.pos, opt().robot_radius_m)};
+  r.s_senders = {{r.id, r.pos, {}, 0, 1}};
+  if (try_continue() && dest_reached()) return true;
+  r.s_in = keep_in;
+  r.s_senders = keep_senders;
+  r.s_comb = keep_comb;
+  r.s_search = keep_search;
+  r.s_na = keep_na;
+  r.s_sent = keep_sent;
+  return false;
+}
+
+/// Runs the point search from the sender's open points through the robot's open points (and the
+/// destination when it is in the robot's area). Returns true when the robot continues the sender.
+bool RobotAgent::try_continue() {
+  auto& r = r_;
+  const Vec2 dest = scen().destination;
+  const auto& own = points().open;
+  r.s_comb = r.s_in.open_points;
+  r.s_na = r.s_comb.size();
+  r.s_comb.insert(r.s_comb.end(), own.begin(), own.end());
+  // The robot's walk for this search: driven, so each step to the next is free.
+  const std::size_t trail_begin = r.s_comb.size();
+  for (Vec2 p : r.walk_trail)
+    r.s_comb.push_back(start_point(r.map, p, opt().robot_radius_m));
+  const std::size_t own_end = r.s_comb.size();
+  const double dcl = clearance_at(r.map.grid(), dest);
+  const bool has_dest = dcl > opt().robot_radius_m;
+  if (has_dest) r.s_comb.push_back(VoronoiPoint{dest, static_cast<float>(dcl), 0.0f});
+  std::vector<double> start(r.s_comb.size(), kInf);
+  for (std::size_t i = 0; i < r.s_na; ++i)
+    start[i] = r.s_comb[i].cost;
+  // Within its own map a robot may also move straight between its own points when the move is
+  // known free (it checks the cells itself; at most 6 m apart to bound the work).
+  // The source's start point (its position) is in its own map too (source_straight_start).
+  const std::size_t own_begin = is_source() && opt().source_straight_start ? 0 : r.s_na;
+  std::size_t los_cells = 0;
+  auto own_edge = [&](std::size_t i, std::size_t j) {
+    if (i < own_begin || j < own_begin || i >= own_end || j >= own_end) return false;
+    if (i < r.s_na && j < r.s_na) return false;
+    if (i >= trail_begin && j >= trail_begin && (i + 1 == j || j + 1 == i)) return true;
+    const Vec2 a = r.s_comb[i].position, b = r.s_comb[j].position;
+    if (distance(a, b) > 6.0) return false;
+    los_cells += static_cast<std::size_t>(distance(a, b) / scen().world.resolution()) + 1;
+    return segment_known_free(a, b);
+  };
+  r.s_search =
+      timed([&] { return search_points(r.s_comb, start, opt().robot_radius_m, own_edge); });
+  report_.metrics.work += los_cells;
+  report_.metrics.work += r.s_search.work;
+  if (has_dest && !std::isfinite(r.s_search.cost.back())) {
+    // The destination is not an open point: join it to the best reached own point it can be
+    // driven to in a straight line through known free space.
+    const std::size_t d = r.s_comb.size() - 1;
+    for (std::size_t i = own_begin; i < d; ++i) {
+      if (!std::isfinite(r.s_search.cost[i])) continue;
+      const double c = r.s_search.cost[i] + distance(r.s_comb[i].position, dest);
+      if (c < r.s_search.cost[d] && segment_known_free(r.s_comb[i].position, dest)) {
+        r.s_search.cost[d] = c;
+        r.s_search.parent[d] = static_cast<std::int32_t>(i);
+      }
+    }
+  }
+  // Table 1 / 2: the Search carries the open points that continue the sender's (those the search
+  // reached), nothing else.
+  r.s_sent.clear();
+  for (std::size_t i = r.s_na; i < own_end; ++i)
+    if (std::isfinite(r.s_search.cost[i])) r.s_sent.push_back(i);
+  return !r.s_sent.empty() || (has_dest && std::isfinite(r.s_search.cost.back()));
+}
+
+bool RobotAgent::dest_reached() const {
+  const auto& r = r_;
+  const Vec2 dest = scen().destination;
+  const double dcl = clearance_at(r.map.grid(), dest);
+  return dcl > opt().robot_radius_m && r.s_comb.size() > r.s_na &&
+         std::isfinite(r.s_search.cost.back()) && r.s_comb.back().position == dest;
+}
+
+/// s_comb index of the own reached point at `p` (the exit point a Path answer names), or
+/// s_comb.size() when the robot has no such point any more.
+std::size_t RobotAgent::own_index_at(Vec2 p) const {
+  const auto& r = r_;
+  std::size_t best = r.s_comb.size();
+  double bd = 0.3;  // a point moves by less than a cell when the map is recomputed
+  for (std::size_t i : r.s_sent) {
+    const double d = distance(r.s_comb[i].position, p);
+    if (d < bd) {
+      bd = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+// ---- the hand-off rule --------------------------------------------------------------------------
+/// The nearest distance to the destination of the points this robot sends on (what receivers
+/// compare themselves with).
+double RobotAgent::reference_distance() const {
+  const auto& r = r_;
+  double d = kInf;
+  for (std::size_t i : r.s_sent)
+    d = std::min(d, distance(r.s_comb[i].position, scen().destination));
+  return d;
+}
+
+/// The one hand-off rule: a robot at `robot` takes the Search on (walks to sense the gap) when
+/// it is kHandOffM closer to the destination than `sender_reference`. The sender applies it to
+/// its neighbours' positions with slack 0 (if some neighbour qualifies, the sender does not walk
+/// itself); a receiver applies it to its own position with slack 0.5 m (it moved at most that
+/// since the sender looked), so a robot the sender counted on always takes the Search on.
+bool RobotAgent::hands_off_to(Vec2 robot, double sender_reference, double slack) const {
+  return distance(robot, scen().destination) < sender_reference - (kHandOffM - slack);
+}
+
+/// A robot that cannot continue a sender's points: if the hand-off rule names it, it waits a
+/// little for a Search it can continue, then walks over to sense the gap (figure 18).
+void RobotAgent::consider_bridge(const SearchMessage& m) {
+  auto& r = r_;
+  if (is_source() || r.s_done || r.walk != Walk::kIdle || r.bridge_at >= 0.0) return;
+  if (hands_off_to(r.pos, nearest_to(m.open_points, scen().destination), 0.5))
+    r.bridge_at = now_ + opt().bridge_wait_s;
+  NS_DEBUG("t=%.1f robot %u cannot continue (d %.1f, ref %.1f, bridge %d)\n", now_, r.id.value,
+           distance(r.pos, scen().destination), nearest_to(m.open_points, scen().destination),
+           r.bridge_at >= 0.0 ? 1 : 0);
+}
+
+// ---- Table 2: a relay -------------------------------------------------------------------------
+void RobotAgent::on(const Header& h, const SearchMessage& m) {
+  auto& r = r_;
+  if (is_source() && m.source == r.id && m.num == search_num_ && opt().search_activity_s > 0.0)
+    // A neighbour (re-)forwards the current Search: it is still spreading, wait for it.
+    search_deadline_ = std::max(search_deadline_, now_ + opt().search_activity_s);
+  if (is_source() || m.source != source_id()) return;
+  if (r.s_num != kNone && m.num < r.s_num) return;  // an older search
+  // Loop guard: a Search that already went through this robot is not taken again (its Path
+  // would come back to it).
+  if (contains(m.relays, r.id)) return;
+  if (r.s_num != m.num) {
+    process_search(h.sender, m, h.hops);
+    return;
+  }
+  // The same search from another robot (or the source's retry).
+  if (r.walk == Walk::kDestination || r.path_forwarded || (r.saved && r.saved->num == m.num))
+    return;
+  const Vec2 spos = neighbour_position(h.sender).value_or(r.pos);
+  r.s_senders.push_back(
+      {h.sender, spos, m.relays, r.s_in.open_points.size(), m.open_points.size()});
+  r.s_in.open_points.insert(r.s_in.open_points.end(), m.open_points.begin(), m.open_points.end());
+  if (r.s_done) {
+    // Already forwarded: re-forward when the costs improve (distributed shortest path), at most
+    // 3 times.
+    std::vector<std::pair<Vec2, double>> before;
+    for (std::size_t i : r.s_sent)
+      before.emplace_back(r.s_comb[i].position, r.s_search.cost[i]);
+    if (!try_continue() || r.reforwards >= 3) return;
+    bool better = r.s_sent.size() > before.size();
+    for (std::size_t i : r.s_sent)
+      for (const auto& [p, c] : before)
+        if (p == r.s_comb[i].position && r.s_search.cost[i] < c - 1e-6) better = true;
+    if (better) {
+      ++r.reforwards;
+      forward_search(h.hops);
+    }
+    return;
+  }
+  if (try_continue()) {
+    NS_DEBUG("t=%.1f robot %u continues search %u from %u\n", now_, r.id.value, m.num,
+             h.sender.value);
+    r.walk = Walk::kIdle;
+    r.waypoints.clear();
+    r.bridge_at = -1.0;
+    after_continue(h.hops);
+    return;
+  }
+  if (r.walk == Walk::kIdle) consider_bridge(m);
+}
+
+void RobotAgent::process_search(RobotId sender, const SearchMessage& m, std::uint8_t hops) {
+  auto& r = r_;
+  r.s_num = m.num;
+  r.s_done = false;
+  r.s_in = m;
+  const Vec2 spos = sender == r.id ? r.pos : neighbour_position(sender).value_or(r.pos);
+  if (r.walk != Walk::kBridge) r.walk_trail.clear();
+  r.s_senders = {{sender, spos, m.relays, 0, m.open_points.size()}};
+  r.reforwards = 0;
+  // A robot walking to the destination stays committed; one bridging a gap may keep walking
+  // (the new Search's points are tried as it senses, walk_progress).
+  const bool bridging = r.walk == Walk::kBridge && opt().keep_bridge_on_new_search;
+  if (r.walk != Walk::kDestination && !bridging && r.walk != Walk::kBack) r.walk = Walk::kIdle;
+  r.bridge_at = -1.0;
+  r.got_paths.clear();
+  r.path_deadline = -1.0;
+  r.path_forwarded = false;
+  r.s_hops = hops;
+  if (try_continue()) {
+    after_continue(hops);
+    return;
+  }
+  if (bridging) return;
+  consider_bridge(m);
+}
+
+void RobotAgent::start_bridge() {
+  auto& r = r_;
+  r.bridge_at = -1.0;
+  if (r.s_done || r.walk != Walk::kIdle) return;
+  double d_near = kInf;
+  Vec2 near{};
+  for (const auto& p : r.s_in.open_points)
+    if (distance(p.position, r.pos) < d_near) {
+      d_near = distance(p.position, r.pos);
+      near = p.position;
+    }
+  if (std::isfinite(d_near) && plan_walk(near)) {
+    r.walk_trail = {r.pos};
+    NS_DEBUG("t=%.1f robot %u bridges to (%.1f,%.1f)\n", now_, r.id.value, near.x, near.y);
+    r.walk = Walk::kBridge;
+    r.walk_since_check = 0.0;
+  }
+}
+
+void RobotAgent::after_continue(std::uint8_t hops) {
+  auto& r = r_;
+  if (dest_reached()) {
+    r.s_done = true;
+    r.walk = Walk::kIdle;
+    r.waypoints.clear();
+    answer_path();
+    return;
+  }
+  // Walk toward the destination and sense it on the source's behalf (figure 18) when the
+  // hand-off rule names no radio neighbour (this robot is the frontier); otherwise forward.
+  const double ref = reference_distance();
+  bool frontier = true;
+  for (const auto& n : transport_.nearby(r.id))
+    if (n.id != source_id() && hands_off_to(n.position, ref, 0.0)) frontier = false;
+  // The source also walks toward the destination itself from its second attempt on (as the
+  // centralized source does), while it keeps waiting for answers.
+  const bool source_walks =
+      is_source() && opt().source_walks_on_retry && report_.search_attempts >= 2;
+  if (frontier || source_walks || r.walk == Walk::kDestination) {
+    bool walking = r.walk == Walk::kDestination;
+    if (!walking && plan_walk(scen().destination)) {
+      if (!is_source() && r.walk_trail.empty()) r.walk_trail = {r.pos};
+      NS_DEBUG("t=%.1f robot %u walks to the destination (frontier %d)\n", now_, r.id.value,
+               frontier ? 1 : 0);
+      r.walk = Walk::kDestination;
+      r.walk_since_check = 0.0;
+      walking = true;
+    }
+    if (walking && !is_source()) return;
+  }
+  if (!is_source() || r.walk != Walk::kDestination) {
+    r.walk = Walk::kIdle;
+    r.waypoints.clear();
+  }
+  r.s_done = true;
+  forward_search(hops);
+}
+
+/// Table 2 line 8-9: add oneself to Relay Robots and send the Search with one's open points.
+void RobotAgent::forward_search(std::uint8_t hops) {
+  auto& r = r_;
+  if (hops + 1 >= opt().hop_limit) return;
+  SearchMessage out;
+  out.source = r.s_in.source;
+  out.num = r.s_in.num;
+  out.destination = r.s_in.destination;
+  double best = kInf;
+  std::size_t best_i = 0;
+  for (std::size_t i : r.s_sent) {
+    VoronoiPoint p = r.s_comb[i];
+    const double c = r.s_search.cost[i];
+    p.cost = static_cast<float>(c);
+    out.open_points.push_back(p);
+    if (c < best) {
+      best = c;
+      best_i = i;
+    }
+  }
+  out.relays = std::isfinite(best)
+                   ? r.s_senders[sender_of(trace_points(r.s_search, best_i).front())].relays
+                   : r.s_senders.front().relays;
+  out.relays.push_back(r.id);
+  NS_DEBUG("t=%.1f robot %u forwards search %u (%zu points, ref %.1f)\n", now_, r.id.value, out.num,
+           out.open_points.size(), reference_distance());
+  broadcast(out, static_cast<std::uint8_t>(hops + 1));
+}
+
+/// Which sender a point of s_comb (index < s_na) came from.
+std::size_t RobotAgent::sender_of(std::size_t i) const {
+  const auto& r = r_;
+  for (std::size_t k = 0; k < r.s_senders.size(); ++k)
+    if (i >= r.s_senders[k].offset && i < r.s_senders[k].offset + r.s_senders[k].count) return k;
+  return 0;
+}
+
+void RobotAgent::walk_progress(bool arrived) {
+  auto& r = r_;
+  if (r.walk == Walk::kBack) {
+    if (arrived) r.walk = Walk::kIdle;
+    return;
+  }
+  if (r.s_done) {
+    if (arrived) r.walk = Walk::kIdle;
+    return;
+  }
+  if (is_source()) {
+    // Is the destination reachable from where the source stands now?
+    if (source_sees_way()) {
+      trail_ = {r.pos};
+      r.walk = Walk::kIdle;
+      r.waypoints.clear();
+      answer_path();
+      return;
+    }
+    if (arrived) r.walk = Walk::kIdle;
+    return;
+  }
+  const bool cont = try_continue();
+  if (r.walk == Walk::kBridge) {
+    if (cont) {
+      r.walk = Walk::kIdle;
+      r.waypoints.clear();
+      after_continue(r.s_hops);
+    } else if (arrived) {
+      r.walk = Walk::kIdle;  // may take the Search on again for another sender
+    }
+  } else if (r.walk == Walk::kDestination) {
+    if (cont && dest_reached()) {
+      r.walk = Walk::kIdle;
+      r.waypoints.clear();
+      r.s_done = true;
+      answer_path();
+    } else if (arrived) {
+      NS_DEBUG("t=%.1f robot %u arrived without a way (cont %d, d %.1f, dcl %.2f)\n", now_,
+               r.id.value, cont ? 1 : 0, distance(r.pos, scen().destination),
+               clearance_at(r.map.grid(), scen().destination));
+      r.walk = Walk::kIdle;
+      r.s_done = true;
+    }
+  }
+}
+
+/// The chain of s_comb indices ending at `last`: the sender's exit point followed by the robot's
+/// own piece (Path messages carry the exit point first, so the receiver finds where the answer
+/// joins its points by position).
+RobotAgent::Piece RobotAgent::own_piece(std::size_t last) const {
+  const auto& r = r_;
+  const auto chain = trace_points(r.s_search, last);
+  std::size_t exit = chain.front();
+  std::vector<VoronoiPoint> piece;
+  for (std::size_t i : chain) {
+    if (i < r.s_na) {
+      exit = i;
+      piece.clear();
+    }
+    VoronoiPoint p = r.s_comb[i];
+    p.cost = 0.0f;
+    piece.push_back(p);
+  }
+  const std::size_t k = sender_of(exit);
+  return {k, static_cast<std::uint32_t>(exit - r.s_senders[k].offset), piece};
+}
+
+void RobotAgent::answer_path() {
+  auto& r = r_;
+  NS_DEBUG("t=%.1f robot %u answers\n", now_, r.id.value);
+  auto pc = own_piece(r.s_comb.size() - 1);
+  PathMessage p;
+  p.source = r.s_in.source;
+  p.num = r.s_in.num;
+  p.relays = r.s_senders[pc.sender].relays;
+  p.whole_path = pc.points;
+  p.exit_index = pc.exit;
+  p.owners.assign(p.whole_path.size(), r.id);
+  p.owners.front() = r.s_senders[pc.sender].id;  // the exit point is the sender's
+  if (is_source()) {
+    finish_route(p, true);
+    return;
+  }
+  r.saved = p;
+  r.saved_cost = r.s_search.cost.back();
+  deliver_path(p, r.s_senders[pc.sender].id, r.s_senders[pc.sender].pos, false);
+}
+
+}  // namespace voronav::sim
