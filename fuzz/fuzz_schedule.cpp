@@ -15,7 +15,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     coordination::VerifyOptions vo;
     vo.at_start = s.at_start;
     vo.at_goal = s.at_goal;
-    vo.max_splits_per_pair = 2000;
     (void)coordination::verify_schedule(s.agents, s.delays, vo);
   });
   return 0;
