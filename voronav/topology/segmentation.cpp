@@ -32,6 +32,41 @@ GridMap<std::int32_t> free_components(const BinaryGrid& blocked, bool eight) {
   return out;
 }
 
+namespace {
+
+using AreaMap = std::unordered_map<std::int32_t, std::size_t>;
+using OverlapMap = std::unordered_map<std::uint64_t, std::size_t>;
+
+std::uint64_t overlap_key(std::int32_t room, std::int32_t region) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(room)) << 32) |
+         static_cast<std::uint32_t>(region);
+}
+
+// Recall: mean over rooms of (largest overlap with one region) / room area; precision: the same
+// over regions. Both scores share this once the areas and overlaps are counted.
+SegmentationScores scores_from_overlap(const AreaMap& room_area, const AreaMap& region_area,
+                                       const OverlapMap& overlap) {
+  AreaMap best_room, best_region;
+  for (const auto& [k, n] : overlap) {
+    const auto room = static_cast<std::int32_t>(k >> 32);
+    const auto region = static_cast<std::int32_t>(k & 0xffffffffU);
+    best_room[room] = std::max(best_room[room], n);
+    best_region[region] = std::max(best_region[region], n);
+  }
+  SegmentationScores s;
+  s.rooms = static_cast<int>(room_area.size());
+  s.regions = static_cast<int>(region_area.size());
+  for (const auto& [room, a] : room_area)
+    s.recall += static_cast<double>(best_room[room]) / static_cast<double>(a);
+  for (const auto& [region, a] : region_area)
+    s.precision += static_cast<double>(best_region[region]) / static_cast<double>(a);
+  if (s.rooms > 0) s.recall /= s.rooms;
+  if (s.regions > 0) s.precision /= s.regions;
+  return s;
+}
+
+}  // namespace
+
 SegmentationScores segmentation_scores_ipa(const GridMap<std::int32_t>& regions,
                                            const BinaryGrid& ground_truth, std::size_t min_pixels) {
   if (regions.width() != ground_truth.width() || regions.height() != ground_truth.height())
@@ -53,26 +88,9 @@ SegmentationScores segmentation_scores_ipa(const GridMap<std::int32_t>& regions,
     const std::int32_t room = rooms[i], region = regions[i];
     if (room < 0 || region < 0 || !room_area.contains(room) || !region_area.contains(region))
       continue;
-    overlap[(static_cast<std::uint64_t>(static_cast<std::uint32_t>(room)) << 32) |
-            static_cast<std::uint32_t>(region)]++;
+    overlap[overlap_key(room, region)]++;
   }
-  std::unordered_map<std::int32_t, std::size_t> best_room, best_region;
-  for (const auto& [k, n] : overlap) {
-    const auto room = static_cast<std::int32_t>(k >> 32);
-    const auto region = static_cast<std::int32_t>(k & 0xffffffffU);
-    best_room[room] = std::max(best_room[room], n);
-    best_region[region] = std::max(best_region[region], n);
-  }
-  SegmentationScores s;
-  s.rooms = static_cast<int>(room_area.size());
-  s.regions = static_cast<int>(region_area.size());
-  for (const auto& [room, a] : room_area)
-    s.recall += static_cast<double>(best_room[room]) / static_cast<double>(a);
-  for (const auto& [region, a] : region_area)
-    s.precision += static_cast<double>(best_region[region]) / static_cast<double>(a);
-  if (s.rooms > 0) s.recall /= s.rooms;
-  if (s.regions > 0) s.precision /= s.regions;
-  return s;
+  return scores_from_overlap(room_area, region_area, overlap);
 }
 
 BinaryGrid resample_nearest(const BinaryGrid& grid, int width, int height) {
@@ -102,34 +120,14 @@ SegmentationScores segmentation_scores(const GridMap<std::int32_t>& regions,
     if (rooms[i] >= 0) room_size[rooms[i]]++;
   std::unordered_map<std::int32_t, std::size_t> room_area, region_area;
   std::unordered_map<std::uint64_t, std::size_t> overlap;
-  auto key = [](std::int32_t a, std::int32_t b) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-           static_cast<std::uint32_t>(b);
-  };
   for (std::size_t i = 0; i < rooms.size(); ++i) {
     const std::int32_t room = rooms[i], region = regions[i];
     if (room < 0 || region < 0 || room_size[room] < min_room_cells) continue;
     room_area[room]++;
     region_area[region]++;
-    overlap[key(room, region)]++;
+    overlap[overlap_key(room, region)]++;
   }
-  std::unordered_map<std::int32_t, std::size_t> best_room, best_region;
-  for (const auto& [k, n] : overlap) {
-    const auto room = static_cast<std::int32_t>(k >> 32);
-    const auto region = static_cast<std::int32_t>(k & 0xffffffffU);
-    best_room[room] = std::max(best_room[room], n);
-    best_region[region] = std::max(best_region[region], n);
-  }
-  SegmentationScores s;
-  s.rooms = static_cast<int>(room_area.size());
-  s.regions = static_cast<int>(region_area.size());
-  for (const auto& [room, a] : room_area)
-    s.recall += static_cast<double>(best_room[room]) / static_cast<double>(a);
-  for (const auto& [region, a] : region_area)
-    s.precision += static_cast<double>(best_region[region]) / static_cast<double>(a);
-  if (s.rooms > 0) s.recall /= s.rooms;
-  if (s.regions > 0) s.precision /= s.regions;
-  return s;
+  return scores_from_overlap(room_area, region_area, overlap);
 }
 
 }  // namespace voronav::topology
