@@ -48,16 +48,6 @@ std::vector<Vec2> points_from(const py::handle& h, const char* what) {
   return out;
 }
 
-py::array_t<double> points_array(const std::vector<Vec2>& pts) {
-  py::array_t<double> a({static_cast<py::ssize_t>(pts.size()), py::ssize_t{2}});
-  auto v = a.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    v(static_cast<py::ssize_t>(i), 0) = pts[i].x;
-    v(static_cast<py::ssize_t>(i), 1) = pts[i].y;
-  }
-  return a;
-}
-
 py::list conflicts_list(const std::vector<co::Conflict>& cs) {
   py::list l;
   for (const auto& c : cs)

@@ -35,16 +35,6 @@ py::array_t<double> world_array(const GridGeometry& g, const std::vector<Cell>& 
   return a;
 }
 
-py::array_t<double> points_array(const std::vector<Vec2>& pts) {
-  py::array_t<double> a({static_cast<py::ssize_t>(pts.size()), py::ssize_t{2}});
-  auto v = a.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    v(static_cast<py::ssize_t>(i), 0) = pts[i].x;
-    v(static_cast<py::ssize_t>(i), 1) = pts[i].y;
-  }
-  return a;
-}
-
 /// A PlanResult with the geometry of the grid it was planned on (for metres).
 struct PyPlanResult {
   planning::PlanResult r;

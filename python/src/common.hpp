@@ -89,6 +89,17 @@ py::enum_<E> bind_enum(py::module_& m, const char* name,
   return e;
 }
 
+/// World points as a new (N, 2) float64 array [m] (x, y per row).
+inline py::array_t<double> points_array(const std::vector<Vec2>& pts) {
+  py::array_t<double> a({static_cast<py::ssize_t>(pts.size()), py::ssize_t{2}});
+  auto v = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    v(static_cast<py::ssize_t>(i), 0) = pts[i].x;
+    v(static_cast<py::ssize_t>(i), 1) = pts[i].y;
+  }
+  return a;
+}
+
 void bind_core(py::module_& m);
 void bind_io(py::module_& m);
 void bind_planning(py::module_& m);
