@@ -40,6 +40,9 @@ struct PrioritizedOptions {
   bool full_starts = false;
   /// First tier avoids unplanned goals (with --at-goal stay) for all time.
   bool avoid_goals = true;
+  /// ... from the time the goal's robot could arrive at the earliest (its shortest travel time;
+  /// before that its goal is free whatever it does), not from time 0.
+  bool goals_from_arrival = true;
 };
 
 struct PrioritizedResult {
@@ -62,9 +65,10 @@ struct PrioritizedResult {
                                                  const PrioritizedOptions& options = {});
 
 /// Where the priority order comes from: the EDF order of the (M,D) network (seed 002, section
-/// 4.1), the index order, the robots by increasing or decreasing shortest travel time, or all of
-/// them, keeping the best by the objective.
-enum class OrderRule { kEdf, kIndex, kShortestFirst, kLongestFirst, kBest };
+/// 4.1), the index order, the robots by increasing or decreasing shortest travel time, the
+/// start/goal dependency order (dependency_order()), all of them keeping the best by the
+/// objective, or PBS (pbs.hpp: a search over priority pairs instead of one order).
+enum class OrderRule { kEdf, kIndex, kShortestFirst, kLongestFirst, kDependencies, kBest, kPbs };
 [[nodiscard]] OrderRule parse_order_rule(const std::string& s);
 [[nodiscard]] const char* to_string(OrderRule r);
 
@@ -94,10 +98,23 @@ struct SippCoordinationResult {
 /// Lower bounds: each robot's shortest 8-connected travel time on the map inflated by its radius
 /// (A*), ignoring the others; makespan bound = their max, sum bound = their sum.
 struct IndividualBounds {
-  std::vector<double> travel;  ///< [s] per robot
+  std::vector<double> travel;            ///< [s] per robot
+  std::vector<std::vector<Cell>> paths;  ///< the shortest paths (empty when none)
   double makespan = 0.0, sum = 0.0;
 };
 [[nodiscard]] IndividualBounds individual_bounds(const BinaryGrid& blocked,
                                                  const std::vector<Agent>& agents);
+
+/// Start/goal dependency order (issue #21, for --at-start wait / --at-goal stay): robot i should
+/// precede j when i's start lies on j's shortest path (i waits there until it leaves, so it should
+/// leave first) and follow j when i's goal lies on j's path (i parks there for ever, so j should
+/// pass first). "Lies on" counts the path's cells and the two side cells of each diagonal step
+/// (a disc parked there blocks the diagonal move). The dependency graph usually has cycles; the
+/// order is greedy: repeatedly the robot with the fewest predecessors not placed yet, ties by
+/// longer travel time first. `use_starts` / `use_goals` select the two kinds of arcs.
+[[nodiscard]] std::vector<int> dependency_order(const GridGeometry& geometry,
+                                                const std::vector<SippRobot>& robots,
+                                                const IndividualBounds& bounds, bool use_starts,
+                                                bool use_goals);
 
 }  // namespace voronav::coordination
