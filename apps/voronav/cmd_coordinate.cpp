@@ -37,6 +37,9 @@ struct CoordArgs {
   std::string order = "edf";
   bool cross_goals = false;
   std::string objective = "makespan";
+  bool no_pbs_fallback = false;
+  double pbs_time_limit = 60.0;
+  std::size_t pbs_max_nodes = 20000;
   std::string at_start, at_goal;
   std::uint64_t seed = 1;
   double node_spacing = -1.0;
@@ -218,6 +221,9 @@ void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::
   }
   opt.planning.max_restarts = a.max_restarts;
   opt.planning.avoid_goals = !a.cross_goals;
+  opt.pbs_fallback = !a.no_pbs_fallback;
+  opt.pbs.time_limit_s = a.pbs_time_limit;
+  opt.pbs.max_nodes = a.pbs_max_nodes;
   const co::SippCoordinationResult r = co::coordinate_sipp(blocked, agents, opt);
   const co::IndividualBounds lb = co::individual_bounds(blocked, agents);
   const bool ok = r.plan.ok;
@@ -254,6 +260,10 @@ void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::
       {"restarts", r.plan.restarts},
       {"failures", failures},
       {"soft_fallbacks", r.plan.soft_fallbacks},
+      {"pbs_used", r.pbs_used},
+      {"pbs_nodes", r.pbs_nodes},
+      {"pbs_priority_pairs", r.pbs_pairs},
+      {"pbs_replans", r.pbs_replans},
       {"expansions", r.plan.expansions},
       {"order", order},
       {"at_start", co::to_string(mo.at_start)},
@@ -433,13 +443,23 @@ void setup(CLI::App& app) {
   cmd->add_option("--search", a->search,
                   "none | exhaustive | edf | ga (delays only; sipp uses --order)")
       ->capture_default_str();
-  cmd->add_option("--order", a->order,
-                  "sipp: priority order edf | index | shortest-first | longest-first | best "
-                  "(best: all of them, keep the best by --objective)")
+  cmd->add_option(
+         "--order", a->order,
+         "sipp: priority order edf | index | shortest-first | longest-first | deps | best | "
+         "pbs (best: all orders, keep the best by --objective; pbs: priority-based "
+         "search, Ma et al. 2019)")
       ->capture_default_str();
   cmd->add_flag("--cross-goals", a->cross_goals,
                 "sipp: do not try to keep off the goals of robots planned later first");
-  cmd->add_option("--objective", a->objective, "sipp --order best: makespan | sum")
+  cmd->add_option("--objective", a->objective, "sipp --order best / pbs: makespan | sum")
+      ->capture_default_str();
+  cmd->add_flag("--no-pbs-fallback", a->no_pbs_fallback,
+                "sipp: do not run PBS when prioritized planning fails in every order");
+  cmd->add_option("--pbs-time-limit", a->pbs_time_limit, "sipp: PBS wall-clock budget [s]")
+      ->check(positive())
+      ->capture_default_str();
+  cmd->add_option("--pbs-max-nodes", a->pbs_max_nodes, "sipp: PBS high-level node budget")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_option("--max-restarts", a->max_restarts,
                   "sipp: failed-robot-first restarts (-1 = number of robots)")

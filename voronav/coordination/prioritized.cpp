@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "voronav/coordination/pbs.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/planning/grid_planner.hpp"
 #include "voronav/planning/planner_factory.hpp"
@@ -221,6 +222,39 @@ SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vec
       have = true;
     }
   }
+  const bool pbs_first = options.order == OrderRule::kPbs;
+  if (pbs_first || (!out.plan.ok && options.pbs_fallback)) {
+    PbsOptions pb;
+    pb.sipp = po.sipp;
+    pb.objective = options.objective;
+    pb.max_nodes = options.pbs.max_nodes;
+    pb.time_limit_s = options.pbs.time_limit_s;
+    const PbsResult r = plan_pbs(blocked, robots, pb);
+    out.pbs_used = true;
+    out.pbs_nodes = r.nodes_expanded;
+    out.pbs_pairs = r.priority_pairs;
+    out.pbs_replans = r.replans;
+    std::vector<int> failures = out.plan.failures;
+    const int restarts = out.plan.restarts;
+    out.plan = PrioritizedResult{};
+    out.plan.ok = r.ok;
+    out.plan.expansions = r.expansions;
+    out.plan.restarts = restarts;
+    out.plan.failures = std::move(failures);
+    out.order_source = "pbs";
+    if (r.ok) {
+      out.plan.plans = r.plans;
+      out.plan.order = r.order;
+      out.plan.arrivals = r.arrivals;
+      out.plan.makespan = r.makespan;
+      out.plan.sum_of_arrivals = r.sum_of_arrivals;
+    } else {
+      out.plan_ms = ms_since(t1);
+      out.message = "PBS failed: " + r.message;
+      out.time_ms = ms_since(t0);
+      return out;
+    }
+  }
   out.plan_ms = ms_since(t1);
   if (!out.plan.ok) {
     out.message = "prioritized SIPP failed: robot " +
@@ -239,6 +273,13 @@ SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vec
   out.verification = verify_trajectories(out.trajectories, radii, options.tolerance);
   out.verify_ms = ms_since(t2);
   out.valid = out.verification.valid;
+  if (out.pbs_used) {
+    out.message = out.valid ? "ok (PBS, " + std::to_string(out.pbs_nodes) + " nodes, " +
+                                  std::to_string(out.pbs_pairs) + " priority pairs)"
+                            : "the continuous-time check found overlaps in the PBS plans";
+    out.time_ms = ms_since(t0);
+    return out;
+  }
   out.message = out.valid ? (out.plan.restarts == 0
                                  ? "ok"
                                  : "ok after " + std::to_string(out.plan.restarts) + " restarts")

@@ -72,11 +72,20 @@ enum class OrderRule { kEdf, kIndex, kShortestFirst, kLongestFirst, kDependencie
 [[nodiscard]] OrderRule parse_order_rule(const std::string& s);
 [[nodiscard]] const char* to_string(OrderRule r);
 
+/// PBS budgets (pbs.hpp; declared here so that the coordinate options carry them).
+struct PbsBudget {
+  std::size_t max_nodes = 20'000;  ///< high-level nodes
+  double time_limit_s = 60.0;      ///< wall clock [s]
+};
+
 struct SippCoordinateOptions {
   CollisionMapOptions map;  ///< at-start / at-goal, node spacing for the (M,D) network
   OrderRule order = OrderRule::kEdf;
-  Objective objective = Objective::kMakespan;  ///< used by kBest (ties: the other one)
+  Objective objective = Objective::kMakespan;  ///< used by kBest and PBS (ties: the other one)
   PrioritizedOptions planning;
+  /// When prioritized planning fails in every order (after its restarts), run PBS.
+  bool pbs_fallback = true;
+  PbsBudget pbs;
   double tolerance = 1e-6;  ///< checker tolerance [m]
 };
 
@@ -85,7 +94,11 @@ struct SippCoordinationResult {
   std::vector<Trajectory> trajectories;  ///< per robot, under the presence conventions
   Verification verification;
   bool valid = false;
-  std::string order_source;  ///< the rule that gave the returned order
+  std::string order_source;     ///< the rule that gave the returned order ("pbs" when PBS planned)
+  bool pbs_used = false;        ///< the plans come from PBS (--order pbs or the fallback)
+  std::size_t pbs_nodes = 0;    ///< PBS high-level nodes expanded
+  std::size_t pbs_pairs = 0;    ///< priority pairs of PBS's solution
+  std::size_t pbs_replans = 0;  ///< PBS low-level SIPP calls
   double order_ms = 0.0, plan_ms = 0.0, verify_ms = 0.0, time_ms = 0.0;
   std::string message;
 };
