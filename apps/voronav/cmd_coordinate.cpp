@@ -42,6 +42,8 @@ struct CoordArgs {
   std::size_t pbs_max_nodes = 20000;
   std::string at_start, at_goal;
   std::uint64_t seed = 1;
+  int ga_three_opt = 0;
+  int ga_population = 0;
   double node_spacing = -1.0;
   bool no_reduction = false;
   bool json = false;
@@ -339,6 +341,8 @@ void run(const CoordArgs& a) {
   opt.map = sc.map_options;
   opt.search.kind = co::parse_search_kind(a.search);
   opt.search.ga.seed = a.seed;
+  opt.search.ga.three_opt_iterations = a.ga_three_opt;
+  opt.search.ga.population = a.ga_population;
   opt.search.edf_reduction = !a.no_reduction;
   const co::CoordinationResult r = co::coordinate(agents, opt);
 
@@ -466,6 +470,13 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--no-reduction", a->no_reduction,
                 "search all robots, not only the EDF urgent group");
+  cmd->add_option("--ga-three-opt", a->ga_three_opt,
+                  "GA: 3-opt moves tried per child (0 = N(N-1), the paper's; -1 = no 3-opt)")
+      ->capture_default_str();
+  cmd->add_option("--ga-population", a->ga_population,
+                  "GA: population size (0 = N, the paper's)")
+      ->check(non_negative())
+      ->capture_default_str();
   cmd->add_option("--seed", a->seed, "GA seed")->check(non_negative())->capture_default_str();
   cmd->add_option("--at-start", a->at_start, "wait (default) | appear");
   cmd->add_option("--at-goal", a->at_goal, "stay (default) | leave");

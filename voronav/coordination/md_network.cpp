@@ -135,7 +135,7 @@ namespace {
 /// stops (cut = true) as soon as a completion time exceeds `cutoff`.
 Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
                         std::span<const double> min_delays, const Resolution* base, int from,
-                        double cutoff) {
+                        double cutoff, int to = -1) {
   const int n = net.size();
   Resolution r;
   r.delays.assign(static_cast<std::size_t>(n), 0.0);
@@ -148,18 +148,52 @@ Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
     r.delays[i] = base->delays[i];
     r.completion[i] = base->completion[i];
   }
+  // With `to`: differs[j] = robot j's delay is not base's (bitwise).
+  std::vector<char> differs;
+  if (base != nullptr && to > from) differs.assign(static_cast<std::size_t>(n), 0);
+  const auto& boxes = net.boxes();
   for (int p = from; p < n; ++p) {
     const int i = order[static_cast<std::size_t>(p)];
+    if (!differs.empty()) {
+      if (p < to) {
+        differs[static_cast<std::size_t>(i)] = 1;  // its set of higher robots may have changed
+      } else {
+        bool stale = false;
+        for (const int k : net.incident(i)) {
+          const MdBox& b = boxes[static_cast<std::size_t>(k)];
+          const int j = b.a == i ? b.b : b.a;
+          if (rank[static_cast<std::size_t>(j)] < p && differs[static_cast<std::size_t>(j)]) {
+            stale = true;
+            break;
+          }
+        }
+        if (!stale) {
+          r.delays[static_cast<std::size_t>(i)] = base->delays[static_cast<std::size_t>(i)];
+          r.completion[static_cast<std::size_t>(i)] =
+              base->completion[static_cast<std::size_t>(i)];
+          if (r.completion[static_cast<std::size_t>(i)] > cutoff) {
+            r.cut = true;
+            r.makespan = kInfinity;
+            r.sum_of_arrivals = kInfinity;
+            return r;
+          }
+          continue;
+        }
+      }
+    }
     double delay =
         min_delays.empty() ? 0.0 : std::max(0.0, min_delays[static_cast<std::size_t>(i)]);
     bool changed = true;
     while (changed && r.status == ResolveStatus::kOk) {
       changed = false;
       for (const int k : net.incident(i)) {
-        const MdBox& b = net.boxes()[static_cast<std::size_t>(k)];
+        const MdBox& b = boxes[static_cast<std::size_t>(k)];
         const int j = b.a == i ? b.b : b.a;
         if (rank[static_cast<std::size_t>(j)] > p) continue;  // j has lower priority
-        const auto [m, d] = net.oriented(k, j, r.delays[static_cast<std::size_t>(j)], delay);
+        // MdNetwork::oriented(k, j, delay_j, delay), inlined (same arithmetic).
+        const double hd = r.delays[static_cast<std::size_t>(j)];
+        const double m = (j == b.b ? b.d : b.m) + delay - hd;
+        const double d = (j == b.b ? b.m : b.d) - delay + hd;
         if (m > kTimeEpsilon && d > kTimeEpsilon) {
           if (std::isinf(d)) {
             r.status = ResolveStatus::kNoDelaySchedule;
@@ -175,6 +209,8 @@ Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
     r.delays[static_cast<std::size_t>(i)] = delay;
     r.completion[static_cast<std::size_t>(i)] =
         net.travel_times()[static_cast<std::size_t>(i)] + delay;
+    if (!differs.empty() && p >= to)
+      differs[static_cast<std::size_t>(i)] = delay != base->delays[static_cast<std::size_t>(i)];
     if (r.status != ResolveStatus::kOk) break;
     if (r.completion[static_cast<std::size_t>(i)] > cutoff) {
       r.cut = true;
@@ -209,10 +245,11 @@ Resolution resolve(const MdNetwork& net, std::span<const int> order,
 }
 
 Resolution resolve_incremental(const MdNetwork& net, std::span<const int> order,
-                               const Resolution& base, int from, double cutoff) {
-  if (base.status != ResolveStatus::kOk || base.delays.size() != order.size() || from <= 0)
+                               const Resolution& base, int from, double cutoff, int to) {
+  if (base.status != ResolveStatus::kOk || base.delays.size() != order.size())
     return resolve_impl(net, order, {}, nullptr, 0, cutoff);
-  return resolve_impl(net, order, {}, &base, std::min<int>(from, net.size()), cutoff);
+  return resolve_impl(net, order, {}, &base, std::clamp<int>(from, 0, net.size()), cutoff,
+                      to > from ? std::min<int>(to, net.size()) : -1);
 }
 
 std::vector<OrientedArc> network_for_order(const MdNetwork& net, std::span<const int> order,
