@@ -473,8 +473,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--ga-three-opt", a->ga_three_opt,
                   "GA: 3-opt moves tried per child (0 = N(N-1), the paper's; -1 = no 3-opt)")
       ->capture_default_str();
-  cmd->add_option("--ga-population", a->ga_population,
-                  "GA: population size (0 = N, the paper's)")
+  cmd->add_option("--ga-population", a->ga_population, "GA: population size (0 = N, the paper's)")
       ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--seed", a->seed, "GA seed")->check(non_negative())->capture_default_str();

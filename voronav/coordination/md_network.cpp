@@ -152,6 +152,11 @@ Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
   std::vector<char> differs;
   if (base != nullptr && to > from) differs.assign(static_cast<std::size_t>(n), 0);
   const auto& boxes = net.boxes();
+  struct Arc {
+    double m, d, hd;
+    int j;
+  };
+  std::vector<Arc> act;
   for (int p = from; p < n; ++p) {
     const int i = order[static_cast<std::size_t>(p)];
     if (!differs.empty()) {
@@ -169,8 +174,7 @@ Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
         }
         if (!stale) {
           r.delays[static_cast<std::size_t>(i)] = base->delays[static_cast<std::size_t>(i)];
-          r.completion[static_cast<std::size_t>(i)] =
-              base->completion[static_cast<std::size_t>(i)];
+          r.completion[static_cast<std::size_t>(i)] = base->completion[static_cast<std::size_t>(i)];
           if (r.completion[static_cast<std::size_t>(i)] > cutoff) {
             r.cut = true;
             r.makespan = kInfinity;
@@ -183,28 +187,41 @@ Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
     }
     double delay =
         min_delays.empty() ? 0.0 : std::max(0.0, min_delays[static_cast<std::size_t>(i)]);
+    // The boxes shared with higher robots, in incident order: (M, D) oriented with j above i
+    // (MdNetwork::oriented, inlined with the same arithmetic), j's delay.
+    act.clear();
+    for (const int k : net.incident(i)) {
+      const MdBox& b = boxes[static_cast<std::size_t>(k)];
+      const int j = b.a == i ? b.b : b.a;
+      if (rank[static_cast<std::size_t>(j)] > p) continue;  // j has lower priority
+      act.push_back(
+          {j == b.b ? b.d : b.m, j == b.b ? b.m : b.d, r.delays[static_cast<std::size_t>(j)], j});
+    }
+    // Passes until no box moves i (the delay only grows). A box whose D after the delays is
+    // <= epsilon stays so for every larger delay: it is dropped from later passes (it could
+    // never fire again, so the sequence of shifts, and the result, are unchanged).
     bool changed = true;
     while (changed && r.status == ResolveStatus::kOk) {
       changed = false;
-      for (const int k : net.incident(i)) {
-        const MdBox& b = boxes[static_cast<std::size_t>(k)];
-        const int j = b.a == i ? b.b : b.a;
-        if (rank[static_cast<std::size_t>(j)] > p) continue;  // j has lower priority
-        // MdNetwork::oriented(k, j, delay_j, delay), inlined (same arithmetic).
-        const double hd = r.delays[static_cast<std::size_t>(j)];
-        const double m = (j == b.b ? b.d : b.m) + delay - hd;
-        const double d = (j == b.b ? b.m : b.d) - delay + hd;
-        if (m > kTimeEpsilon && d > kTimeEpsilon) {
+      std::size_t keep = 0;
+      for (std::size_t q = 0; q < act.size(); ++q) {
+        const Arc& e = act[q];
+        const double m = e.m + delay - e.hd;
+        const double d = e.d - delay + e.hd;
+        if (!(d > kTimeEpsilon)) continue;
+        act[keep++] = e;
+        if (m > kTimeEpsilon) {
           if (std::isinf(d)) {
             r.status = ResolveStatus::kNoDelaySchedule;
             r.blocked = i;
-            r.blocked_by = j;
+            r.blocked_by = e.j;
             break;
           }
           delay += d;
           changed = true;
         }
       }
+      if (r.status == ResolveStatus::kOk) act.resize(keep);
     }
     r.delays[static_cast<std::size_t>(i)] = delay;
     r.completion[static_cast<std::size_t>(i)] =
