@@ -40,6 +40,7 @@ struct CoordArgs {
   bool no_pbs_fallback = false;
   double pbs_time_limit = 60.0;
   std::size_t pbs_max_nodes = 20000;
+  double sipp_ga_time_limit = 1.5;
   std::string at_start, at_goal;
   std::uint64_t seed = 1;
   int ga_three_opt = 0;
@@ -226,6 +227,8 @@ void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::
   opt.pbs_fallback = !a.no_pbs_fallback;
   opt.pbs.time_limit_s = a.pbs_time_limit;
   opt.pbs.max_nodes = a.pbs_max_nodes;
+  opt.ga.seed = a.seed;
+  opt.ga.time_limit_s = a.sipp_ga_time_limit;
   const co::SippCoordinationResult r = co::coordinate_sipp(blocked, agents, opt);
   const co::IndividualBounds lb = co::individual_bounds(blocked, agents);
   const bool ok = r.plan.ok;
@@ -266,6 +269,9 @@ void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::
       {"pbs_nodes", r.pbs_nodes},
       {"pbs_priority_pairs", r.pbs_pairs},
       {"pbs_replans", r.pbs_replans},
+      {"ga_generations", r.ga_generations},
+      {"ga_evaluations", r.ga_evaluations},
+      {"ga_improved_over_seeds", r.ga_improved},
       {"expansions", r.plan.expansions},
       {"order", order},
       {"at_start", co::to_string(mo.at_start)},
@@ -460,6 +466,10 @@ void setup(CLI::App& app) {
   cmd->add_flag("--no-pbs-fallback", a->no_pbs_fallback,
                 "sipp: do not run PBS when prioritized planning fails in every order");
   cmd->add_option("--pbs-time-limit", a->pbs_time_limit, "sipp: PBS wall-clock budget [s]")
+      ->check(positive())
+      ->capture_default_str();
+  cmd->add_option("--sipp-ga-time-limit", a->sipp_ga_time_limit,
+                  "sipp --order ga: wall-clock budget of the GA over SIPP orders [s]")
       ->check(positive())
       ->capture_default_str();
   cmd->add_option("--pbs-max-nodes", a->pbs_max_nodes, "sipp: PBS high-level node budget")

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "voronav/coordination/pbs.hpp"
+#include "voronav/coordination/sipp_ga.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/planning/grid_planner.hpp"
 #include "voronav/planning/planner_factory.hpp"
@@ -28,8 +29,9 @@ OrderRule parse_order_rule(const std::string& s) {
   if (s == "deps") return OrderRule::kDependencies;
   if (s == "best") return OrderRule::kBest;
   if (s == "pbs") return OrderRule::kPbs;
+  if (s == "ga") return OrderRule::kGa;
   throw Error("--order", 0,
-              "expected edf|index|shortest-first|longest-first|deps|best|pbs, got '" + s + "'");
+              "expected edf|index|shortest-first|longest-first|deps|best|ga|pbs, got '" + s + "'");
 }
 
 const char* to_string(OrderRule r) {
@@ -48,6 +50,8 @@ const char* to_string(OrderRule r) {
       return "best";
     case OrderRule::kPbs:
       return "pbs";
+    case OrderRule::kGa:
+      return "ga";
   }
   return "?";
 }
@@ -174,7 +178,7 @@ SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vec
     return o;
   };
   std::vector<std::pair<OrderRule, std::vector<int>>> candidates;
-  const bool best = options.order == OrderRule::kBest;
+  const bool best = options.order == OrderRule::kBest || options.order == OrderRule::kGa;
   if (best || options.order == OrderRule::kEdf) {
     if (n > 1) {
       const MdNetwork net = build_network(agents, options.map);
@@ -214,6 +218,21 @@ SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vec
                                                      : std::pair{r.sum_of_arrivals, r.makespan};
   };
   bool have = false;
+  if (options.order == OrderRule::kGa) {
+    // The paper's GA over SIPP orders, seeded with every order rule (sipp_ga.hpp).
+    std::vector<std::vector<int>> seeds;
+    for (const auto& c : candidates)
+      seeds.push_back(c.second);
+    SippGaResult ga =
+        sipp_genetic_search(blocked, robots, seeds, options.objective, po, options.ga);
+    out.ga_generations = ga.generations;
+    out.ga_evaluations = ga.evaluations;
+    out.ga_improved = ga.improved_over_seeds != 0;
+    out.plan = std::move(ga.best);
+    out.order_source = "ga";
+    have = true;
+    candidates.clear();
+  }
   for (const auto& [rule, order] : candidates) {
     PrioritizedResult r = plan_prioritized(blocked, robots, order, po);
     if (!have || (r.ok && (!out.plan.ok || key(r) < key(out.plan)))) {

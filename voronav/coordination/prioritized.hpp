@@ -15,6 +15,7 @@
 // order; then prioritized SIPP; then the same continuous-time checker as the delay schedules.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -68,9 +69,33 @@ struct PrioritizedResult {
 /// 4.1), the index order, the robots by increasing or decreasing shortest travel time, the
 /// start/goal dependency order (dependency_order()), all of them keeping the best by the
 /// objective, or PBS (pbs.hpp: a search over priority pairs instead of one order).
-enum class OrderRule { kEdf, kIndex, kShortestFirst, kLongestFirst, kDependencies, kBest, kPbs };
+/// kGa: the paper's GA over SIPP orders (sipp_ga.hpp), seeded with all the rules before it.
+enum class OrderRule {
+  kEdf,
+  kIndex,
+  kShortestFirst,
+  kLongestFirst,
+  kDependencies,
+  kBest,
+  kPbs,
+  kGa
+};
 [[nodiscard]] OrderRule parse_order_rule(const std::string& s);
 [[nodiscard]] const char* to_string(OrderRule r);
+
+/// GA over SIPP orders (sipp_ga.hpp): the paper's operators, small budgets (an evaluation is a
+/// whole prioritized planning run).
+struct SippGaOptions {
+  std::uint64_t seed = 1;
+  int population = 8;  ///< orders kept (seeds first, then random orders)
+  int children = 4;    ///< crossovers per generation
+  double mutation_rate = 0.2;
+  int mutation_min_edges = 4, mutation_max_edges = 7;
+  double elitism = 0.2;  ///< the best fraction survives unchanged
+  int three_opt = 4;     ///< 3-opt segment moves tried per child (first improvement)
+  int max_generations = 50;
+  double time_limit_s = 1.5;  ///< stop starting generations after this wall-clock time
+};
 
 /// PBS budgets (pbs.hpp; declared here so that the coordinate options carry them).
 struct PbsBudget {
@@ -86,6 +111,7 @@ struct SippCoordinateOptions {
   /// When prioritized planning fails in every order (after its restarts), run PBS.
   bool pbs_fallback = true;
   PbsBudget pbs;
+  SippGaOptions ga;         ///< --order ga
   double tolerance = 1e-6;  ///< checker tolerance [m]
 };
 
@@ -99,6 +125,9 @@ struct SippCoordinationResult {
   std::size_t pbs_nodes = 0;    ///< PBS high-level nodes expanded
   std::size_t pbs_pairs = 0;    ///< priority pairs of PBS's solution
   std::size_t pbs_replans = 0;  ///< PBS low-level SIPP calls
+  int ga_generations = 0;       ///< --order ga: generations run
+  std::size_t ga_evaluations = 0;  ///< --order ga: orders planned
+  bool ga_improved = false;        ///< --order ga: found an order better than every seed
   double order_ms = 0.0, plan_ms = 0.0, verify_ms = 0.0, time_ms = 0.0;
   std::string message;
 };
