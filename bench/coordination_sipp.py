@@ -105,6 +105,12 @@ def main():
                                            f"{r.get('restarts')}")
                             if r.get("status") != "ok":
                                 row["note"] += "; " + str(r.get("message"))
+                        elif r.get("order_source") == "ga":
+                            row["note"] = (f"GA: {r.get('ga_generations')} generations, "
+                                           f"{r.get('ga_evaluations')} orders planned, "
+                                           + ("better than every seed"
+                                              if r.get("ga_improved_over_seeds")
+                                              else "a seed order is the best"))
                         elif "restarts" in r:
                             row["note"] = (f"restarts {r.get('restarts')}, tier fallbacks "
                                            f"{r.get('soft_fallbacks')}")

@@ -228,10 +228,13 @@ SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vec
     out.ga_generations = ga.generations;
     out.ga_evaluations = ga.evaluations;
     out.ga_improved = ga.improved_over_seeds != 0;
-    out.plan = std::move(ga.best);
-    out.order_source = "ga";
-    have = true;
-    candidates.clear();
+    if (ga.best.ok) {
+      out.plan = std::move(ga.best);
+      out.order_source = "ga";
+      have = true;
+      candidates.clear();
+    }
+    // Else no order works without restarts: the rules below, with their restarts, then PBS.
   }
   for (const auto& [rule, order] : candidates) {
     PrioritizedResult r = plan_prioritized(blocked, robots, order, po);
