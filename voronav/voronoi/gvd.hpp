@@ -152,14 +152,16 @@ class DynamicGvd {
   void row_lower(int y, int xa, int xb, const std::vector<int>& cols,
                  std::vector<std::size_t>* changed);
   void grow_span(std::unordered_map<int, std::pair<int, int>>& spans, std::size_t i) const;
-  void row_pass(int y);
+  void row_pass(int y, int x0, int x1);
   // Recomputes the cells [xa, xb] of row y exactly from the column data (window of columns
   // bounded by the unchanged cells xa-1 and xb+1); appends the cells that changed.
   void row_segment(int y, int xa, int xb, std::vector<std::size_t>* changed);
   // Floods the blocked component of seed with id; returns how many distinct old labels it met.
   // The flooded cells are appended to `cells` when given.
   int relabel_from(std::size_t seed, std::int32_t id, std::vector<std::size_t>* cells = nullptr);
-  void full_labels();
+  // Labels of all obstacle cells; the cells outside the box [bx0, bx1] x [by0, by1] of the
+  // non-blocked cells are all blocked (bx1 < 0: no box).
+  void full_labels(int bx0, int by0, int bx1, int by1);
   // Labels after a batch; appends the blocked cells whose label changed to `relabeled`.
   bool update_labels(const std::vector<std::size_t>& added, const std::vector<std::size_t>& removed,
                      std::vector<std::size_t>* relabeled);

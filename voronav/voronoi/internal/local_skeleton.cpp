@@ -42,8 +42,8 @@ void ParallelThinning::build(const std::vector<std::uint8_t>& in,
   key_ = &key;
   const std::size_t n = in.size();
   removed_at_.assign(n, kNever);
-  rec_of_.assign(n, -1);
-  seen_.assign(n, 0);
+  rec_of_.clear();  // the scratch of update() is allocated by the first update
+  seen_.clear();
   epoch_ = 0;
   std::vector<std::size_t> lists[4];
   for (std::size_t c = 0; c < n; ++c)
@@ -77,27 +77,36 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
                                             const std::vector<std::size_t>& key_changes,
                                             std::size_t* work) {
   key_ = &key;
-  struct Rec {
-    std::size_t cell;
-    std::uint8_t old_in;
-    std::int32_t old_removed_at;
-  };
-  std::vector<Rec> recs;
+  if (rec_of_.size() != in.size()) {
+    rec_of_.assign(in.size(), -1);
+    seen_.assign(in.size(), 0);
+    epoch_ = 0;
+  }
+  const auto w = static_cast<std::ptrdiff_t>(r_.width);
+  const auto uw = static_cast<std::size_t>(r_.width);
+  std::vector<Rec>& recs = recs_;
+  recs.clear();
   auto touch = [&](std::size_t c, std::uint8_t old_in) {
     if (rec_of_[c] >= 0) return;
     rec_of_[c] = static_cast<std::int32_t>(recs.size());
-    recs.push_back({c, old_in, removed_at_[c]});
+    recs.push_back({c, old_in, removed_at_[c], static_cast<std::int32_t>(c % uw),
+                    static_cast<std::int32_t>(c / uw)});
   };
   for (const Delta& d : in_changes) {
     touch(d.cell, d.old_value);
     removed_at_[d.cell] = kNever;  // decided again below
   }
-  std::vector<std::size_t> perm;  // cells of the set whose key changed: dirty at every step
+  // Cells of the set whose key changed: dirty at every step while they are alive (the key of a
+  // dead cell is never read again, so it leaves the list).
+  std::vector<Rec>& perm = perm_;
+  perm.clear();
   for (const std::size_t k : key_changes)
-    if (in[k]) perm.push_back(k);
+    if (in[k]) {
+      perm.push_back(
+          {k, 1, 0, static_cast<std::int32_t>(k % uw), static_cast<std::int32_t>(k / uw)});
+    }
 
-  const auto w = static_cast<std::ptrdiff_t>(r_.width);
-  std::vector<std::size_t> cand;
+  std::vector<std::size_t>& cand = cand_;
   const int old_steps = steps_;
   int quiet = 0, last = -1;
   for (int t = 0;; ++t) {
@@ -107,9 +116,8 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
     }
     const int sf = t & 3;
     cand.clear();
-    // The cells of the current subfield in the 3x3 neighbourhood of c.
-    auto add_around = [&](std::size_t c) {
-      const auto cx = static_cast<std::ptrdiff_t>(c) % w, cy = static_cast<std::ptrdiff_t>(c) / w;
+    // The cells of the current subfield in the 3x3 neighbourhood of c (at x, y).
+    auto add_around = [&](std::size_t c, std::int32_t cx, std::int32_t cy) {
       const std::ptrdiff_t fx = (cx & 1) == (sf & 1) ? 0 : -1;
       const std::ptrdiff_t fy = (cy & 1) == ((sf >> 1) & 1) ? 0 : -1;
       for (std::ptrdiff_t dy = fy; dy <= 1; dy += 2)
@@ -128,11 +136,12 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
       const bool new_alive = in[rec.cell] && removed_at_[rec.cell] >= t;
       if (old_alive == new_alive) continue;
       any_diff = true;
-      add_around(rec.cell);
+      add_around(rec.cell, rec.x, rec.y);
     }
+    std::erase_if(perm, [&](const Rec& p) { return removed_at_[p.cell] < t; });
     if (!any_diff && perm.empty()) break;  // the same state as the stored run from here on
-    for (const std::size_t k : perm)
-      add_around(k);
+    for (const Rec& p : perm)
+      add_around(p.cell, p.x, p.y);
     bool removed = false;
     for (const std::size_t c : cand) {
       if (removed_at_[c] < t) continue;
@@ -208,7 +217,7 @@ void ParallelPruning::build(const std::vector<std::uint8_t>& in,
   d2_ = &d2;
   const std::size_t n = in.size();
   owner_.assign(n, -1);
-  seen_.assign(n, 0);
+  seen_.clear();  // allocated by the first update
   epoch_ = 0;
   spurs_.clear();
   std::vector<std::size_t> path;
@@ -229,6 +238,10 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
                                            const std::vector<std::size_t>& key_changes,
                                            double max_len, std::size_t* work) {
   d2_ = &d2;
+  if (seen_.size() != in.size()) {
+    seen_.assign(in.size(), 0);
+    epoch_ = 0;
+  }
   std::vector<std::size_t> dirty;
   for (const Delta& d : in_changes)
     dirty.push_back(d.cell);

@@ -73,6 +73,14 @@ class ParallelThinning {
   std::vector<std::int32_t> removed_at_;  // step at which the cell was removed (kNever: kept)
   int steps_ = 0;                         // >= 1 + the last step that removed a cell
   // Scratch for update().
+  struct Rec {
+    std::size_t cell;
+    std::uint8_t old_in;
+    std::int32_t old_removed_at;
+    std::int32_t x, y;  // coordinates (no division in the step loop)
+  };
+  std::vector<Rec> recs_, perm_;
+  std::vector<std::size_t> cand_;
   std::vector<std::int32_t> rec_of_;
   std::vector<std::uint32_t> seen_;
   std::uint32_t epoch_ = 0;
