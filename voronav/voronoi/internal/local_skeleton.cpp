@@ -4,6 +4,17 @@
 #include <cmath>
 
 namespace voronav::voronoi::internal {
+namespace {
+
+// [lo, hi): the index range holding every set cell of `in` (empty: lo == hi).
+std::pair<std::size_t, std::size_t> set_range(const std::vector<std::uint8_t>& in) {
+  const auto first = std::find_if(in.begin(), in.end(), [](std::uint8_t v) { return v != 0; });
+  if (first == in.end()) return {0, 0};
+  const auto last = std::find_if(in.rbegin(), in.rend(), [](std::uint8_t v) { return v != 0; });
+  return {static_cast<std::size_t>(first - in.begin()), static_cast<std::size_t>(in.rend() - last)};
+}
+
+}  // namespace
 
 bool ParallelThinning::removable(const std::vector<std::uint8_t>& in, std::size_t c, int t) const {
   int nb[8];
@@ -45,8 +56,9 @@ void ParallelThinning::build(const std::vector<std::uint8_t>& in,
   rec_of_.clear();  // the scratch of update() is allocated by the first update
   seen_.clear();
   epoch_ = 0;
+  const auto [lo, hi] = set_range(in);  // sparse maps: only the range of the set is scanned
   std::vector<std::size_t> lists[4];
-  for (std::size_t c = 0; c < n; ++c)
+  for (std::size_t c = lo; c < hi; ++c)
     if (in[c]) lists[subfield(c)].push_back(c);
   int quiet = 0, last = -1;
   for (int t = 0;; ++t) {
@@ -67,7 +79,7 @@ void ParallelThinning::build(const std::vector<std::uint8_t>& in,
   }
   steps_ = last + 1;
   out_.assign(n, 0);
-  for (std::size_t c = 0; c < n; ++c)
+  for (std::size_t c = lo; c < hi; ++c)
     out_[c] = in[c] && removed_at_[c] == kNever ? 1 : 0;
 }
 
@@ -221,14 +233,15 @@ void ParallelPruning::build(const std::vector<std::uint8_t>& in,
   epoch_ = 0;
   spurs_.clear();
   std::vector<std::size_t> path;
-  for (std::size_t c = 0; c < n; ++c) {
+  const auto [lo, hi] = set_range(in);
+  for (std::size_t c = lo; c < hi; ++c) {
     if (!in[c] || skeleton_degree(in, r_, c) != 1 || !walk(in, c, max_len, path)) continue;
     for (const std::size_t p : path)
-      owner_[p] = static_cast<std::int64_t>(c);
+      owner_[p] = static_cast<std::int32_t>(c);
     spurs_.emplace(c, path);
   }
   out_.assign(n, 0);
-  for (std::size_t c = 0; c < n; ++c)
+  for (std::size_t c = lo; c < hi; ++c)
     out_[c] = in[c] && owner_[c] < 0 ? 1 : 0;
 }
 
@@ -307,7 +320,7 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
     if (!in[e] || owner_[e] >= 0 || skeleton_degree(in, r_, e) != 1) continue;
     if (!walk(in, e, max_len, path)) continue;
     for (const std::size_t p : path) {
-      owner_[p] = static_cast<std::int64_t>(e);
+      owner_[p] = static_cast<std::int32_t>(e);
       touched.push_back(p);
     }
     spurs_.emplace(e, path);

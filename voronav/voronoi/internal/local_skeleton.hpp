@@ -113,7 +113,7 @@ class ParallelPruning {
   double min_cells_ = 0.0;
   double ratio_ = 0.0;
   std::vector<std::uint8_t> out_;
-  std::vector<std::int64_t> owner_;  // end of the pruned spur through the cell (-1 none)
+  std::vector<std::int32_t> owner_;  // end of the pruned spur through the cell (-1 none)
   std::unordered_map<std::size_t, std::vector<std::size_t>> spurs_;  // end -> removed path
   std::vector<std::uint32_t> seen_;                                  // scratch of update()
   std::uint32_t epoch_ = 0;
