@@ -113,9 +113,14 @@ DynamicGvd::DynamicGvd(const BinaryGrid& blocked, const GvdOptions& options)
   ph_ = geometry_.height + 2;
   const std::size_t n = static_cast<std::size_t>(pw_) * static_cast<std::size_t>(ph_);
   state_.assign(n, options.border_is_blocked ? kBlockedCell : kOutside);
-  for (int y = 0; y < geometry_.height; ++y)
+  const auto src = blocked.data();
+  for (int y = 0; y < geometry_.height; ++y) {
+    const std::uint8_t* in =
+        &src[static_cast<std::size_t>(y) * static_cast<std::size_t>(geometry_.width)];
+    std::uint8_t* out = &state_[pidx(1, y + 1)];
     for (int x = 0; x < geometry_.width; ++x)
-      state_[pidx(x + 1, y + 1)] = blocked[Cell{x, y}] ? kBlockedCell : kFreeCell;
+      out[x] = in[x] ? kBlockedCell : kFreeCell;
+  }
   // Sparse build: every cell outside the bounding box of the non-blocked cells is an obstacle
   // whose own distance is 0, and the obstacles just outside the box shield it from the rest, so
   // the EDT, the labels and the raw diagram are computed inside the box (plus its one-cell frame)
@@ -140,11 +145,9 @@ DynamicGvd::DynamicGvd(const BinaryGrid& blocked, const GvdOptions& options)
   d2_.assign(n, 0);
   site_.resize(n);
   for (int y = 0; y < ph_; ++y)
-    for (int x = 0; x < pw_; ++x) {
-      const std::size_t i = pidx(x, y);
-      col_arg_[i] = y;
-      site_[i] = static_cast<std::int32_t>(i);
-    }
+    std::fill_n(&col_arg_[pidx(0, y)], pw_, y);
+  for (std::size_t i = 0; i < n; ++i)
+    site_[i] = static_cast<std::int32_t>(i);
   label_.assign(n, -1);
   raw_.assign(n, 0);
   max_d2_ = 0;

@@ -2,16 +2,32 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace voronav::voronoi::internal {
 namespace {
 
-// [lo, hi): the index range holding every set cell of `in` (empty: lo == hi).
+// [lo, hi): the index range holding every set cell of `in` (empty: lo == hi). Scans 8 bytes at
+// a time (the sets are sparse).
 std::pair<std::size_t, std::size_t> set_range(const std::vector<std::uint8_t>& in) {
-  const auto first = std::find_if(in.begin(), in.end(), [](std::uint8_t v) { return v != 0; });
-  if (first == in.end()) return {0, 0};
-  const auto last = std::find_if(in.rbegin(), in.rend(), [](std::uint8_t v) { return v != 0; });
-  return {static_cast<std::size_t>(first - in.begin()), static_cast<std::size_t>(in.rend() - last)};
+  const std::size_t n = in.size();
+  auto word = [&](std::size_t i) {
+    std::uint64_t v = 0;
+    std::memcpy(&v, in.data() + i, 8);
+    return v;
+  };
+  std::size_t lo = 0;
+  while (lo + 8 <= n && word(lo) == 0)
+    lo += 8;
+  while (lo < n && in[lo] == 0)
+    ++lo;
+  if (lo == n) return {0, 0};
+  std::size_t hi = n;
+  while (hi >= lo + 8 && word(hi - 8) == 0)
+    hi -= 8;
+  while (hi > lo && in[hi - 1] == 0)
+    --hi;
+  return {lo, hi};
 }
 
 }  // namespace
