@@ -181,7 +181,7 @@ void DynamicGvd::grow_span(std::unordered_map<int, std::pair<int, int>>& spans,
   }
 }
 
-void DynamicGvd::column_pass(int x, std::vector<std::pair<int, bool>>* changed_rows,
+void DynamicGvd::column_pass(int x, std::vector<ChangedRow>* changed_rows,
                              std::pair<int, int> span) {
   // 1-D nearest site along the column: forward then backward scan (ties: the lower row). Only
   // the rows between the nearest obstacles outside the changed span can change: those obstacles
@@ -219,7 +219,8 @@ void DynamicGvd::column_pass(int x, std::vector<std::pair<int, bool>>* changed_r
       // Lowered: the new (distance, row) is lexicographically smaller and exists.
       const bool lowered =
           d >= 0 && (col_d_[i] < 0 || d < col_d_[i] || (d == col_d_[i] && best < col_arg_[i]));
-      changed_rows->emplace_back(y, !lowered);
+      changed_rows->push_back(
+          {y, !lowered, col_arg_[i] < 0 ? -1 : static_cast<std::int32_t>(pidx(x, col_arg_[i]))});
     }
     col_d_[i] = d;
     col_arg_[i] = best;
@@ -681,26 +682,31 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     grow_span(column_rows, i);
   for (const std::size_t i : removed)
     grow_span(column_rows, i);
-  std::vector<std::tuple<int, int, bool>> row_cols;  // (row, column, raised) that changed
-  std::vector<std::pair<int, bool>> rows;
+  // (row, column, raised, old site of the column in that row) that changed
+  std::vector<std::tuple<int, int, bool, std::int32_t>> row_cols;
+  std::vector<ChangedRow> rows;
   for (const int x : columns) {
     rows.clear();
     column_pass(x, &rows, column_rows[x]);
-    for (const auto& [y, raised] : rows)
-      row_cols.emplace_back(y, x, raised);
+    for (const ChangedRow& r : rows)
+      row_cols.emplace_back(r.y, x, r.raised, r.old_site);
   }
   std::sort(row_cols.begin(), row_cols.end());
   std::vector<std::size_t> changed;
   std::vector<std::pair<int, int>> ranges;
   std::vector<int> lowered_cols;
+  std::vector<std::int32_t> old_sites;
   for (std::size_t a = 0; a < row_cols.size();) {
     const int y = std::get<0>(row_cols[a]);
     ranges.clear();
     lowered_cols.clear();
-    bool raised = false;
+    old_sites.clear();
+    bool raised = false, lowered = false;
     for (; a < row_cols.size() && std::get<0>(row_cols[a]) == y; ++a) {
       raised |= std::get<2>(row_cols[a]);
+      lowered |= !std::get<2>(row_cols[a]);
       lowered_cols.push_back(std::get<1>(row_cols[a]));  // sorted, distinct
+      if (std::get<3>(row_cols[a]) >= 0) old_sites.push_back(std::get<3>(row_cols[a]));
     }
     // The cells that can see column xc (|x - xc|^2 <= d^2) form an interval around it (the
     // distance is 1-Lipschitz). For a run of adjacent columns c0..c1 the union of the intervals
@@ -734,11 +740,34 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     }
     ranges.resize(m + 1);
     for (const auto& [l, r] : ranges) {
-      if (raised)
+      if (raised && !lowered) {
+        // Only raised columns: every other column's candidate is unchanged or worse, so a cell
+        // changes only when its nearest site was in a changed column (one of old_sites; the
+        // site of a cell is the site of its column in its row). Those runs are recomputed,
+        // bounded by the unchanged cells around them.
+        auto hit = [&](int x) {
+          const std::int32_t st = site_[pidx(x, y)];
+          return st >= 0 && std::find(old_sites.begin(), old_sites.end(), st) != old_sites.end();
+        };
+        for (int x = l; x <= r;) {
+          if (!hit(x)) {
+            ++x;
+            continue;
+          }
+          int e = x;
+          while (e + 1 <= r && hit(e + 1))
+            ++e;
+          row_segment(y, x, e, &changed);
+          stats.row_cells += static_cast<std::size_t>(e - x + 1);
+          x = e + 1;
+        }
+      } else if (raised) {
         row_segment(y, l, r, &changed);
-      else
+        stats.row_cells += static_cast<std::size_t>(r - l + 1);
+      } else {
         row_lower(y, l, r, lowered_cols, &changed);
-      stats.row_cells += static_cast<std::size_t>(r - l + 1);
+        stats.row_cells += static_cast<std::size_t>(r - l + 1);
+      }
     }
     ++stats.recomputed_rows;
   }

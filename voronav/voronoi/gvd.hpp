@@ -145,8 +145,12 @@ class DynamicGvd {
   // Column x from scratch (span {-1, -1}) or around the changed rows span (the rows between
   // the nearest obstacles outside it); appends the rows whose column data changed.
   // (row, raised) pairs: raised when the new column value is not lexicographically smaller.
-  void column_pass(int x, std::vector<std::pair<int, bool>>* changed_rows,
-                   std::pair<int, int> span);
+  struct ChangedRow {
+    int y;
+    bool raised;
+    std::int32_t old_site;  // padded index of the column's old site in row y (-1 none)
+  };
+  void column_pass(int x, std::vector<ChangedRow>* changed_rows, std::pair<int, int> span);
   // Row y where only the columns `cols` changed and all were lowered: min of the old site and
   // the changed columns' sites for the cells [xa, xb].
   void row_lower(int y, int xa, int xb, const std::vector<int>& cols,
