@@ -111,6 +111,7 @@ DynamicGvd::DynamicGvd(const BinaryGrid& blocked, const GvdOptions& options)
   check_options(options);
   pw_ = geometry_.width + 2;
   ph_ = geometry_.height + 2;
+  inv_pw_ = 1.0 / static_cast<double>(pw_);
   const std::size_t n = static_cast<std::size_t>(pw_) * static_cast<std::size_t>(ph_);
   state_.assign(n, options.border_is_blocked ? kBlockedCell : kOutside);
   const auto src = blocked.data();
@@ -579,11 +580,7 @@ bool DynamicGvd::update_labels(const std::vector<std::size_t>& added,
 bool DynamicGvd::raw_mark(std::size_t i) const {
   if (state_[i] != kFreeCell || site_[i] < 0) return false;
   const auto s = static_cast<std::size_t>(site_[i]);
-  const int sx = static_cast<int>(s % static_cast<std::size_t>(pw_));
-  const int sy = static_cast<int>(s / static_cast<std::size_t>(pw_));
-  const double sep = std::max(options_.site_separation, options_.site_separation_ratio *
-                                                            std::sqrt(static_cast<double>(d2_[i])));
-  const double sep2 = sep * sep;
+  double sep2 = -1.0;  // computed when first needed
   const std::ptrdiff_t offs[4] = {1, -1, pw_, -pw_};
   for (const std::ptrdiff_t off : offs) {
     const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) + off);
@@ -594,16 +591,19 @@ bool DynamicGvd::raw_mark(std::size_t i) const {
       continue;
     }
     if (state_[j] != kFreeCell || site_[j] < 0 || site_[j] == site_[i]) continue;
+    if (!(d2_[i] > d2_[j] || (d2_[i] == d2_[j] && i < j))) continue;  // the other one is marked
     const auto t = static_cast<std::size_t>(site_[j]);
-    bool different = label_[s] != label_[t];
-    if (!different) {
-      const int tx = static_cast<int>(t % static_cast<std::size_t>(pw_));
-      const int ty = static_cast<int>(t / static_cast<std::size_t>(pw_));
-      const double dx = sx - tx, dy = sy - ty;
-      different = dx * dx + dy * dy > sep2;
+    if (label_[s] != label_[t]) return true;
+    if (sep2 < 0.0) {
+      const double sep =
+          std::max(options_.site_separation,
+                   options_.site_separation_ratio * std::sqrt(static_cast<double>(d2_[i])));
+      sep2 = sep * sep;
     }
-    if (!different) continue;
-    if (d2_[i] > d2_[j] || (d2_[i] == d2_[j] && i < j)) return true;
+    const auto [sx, sy] = xy(s);
+    const auto [tx, ty] = xy(t);
+    const double dx = sx - tx, dy = sy - ty;
+    if (dx * dx + dy * dy > sep2) return true;
   }
   return false;
 }

@@ -138,6 +138,18 @@ class DynamicGvd {
   [[nodiscard]] GeneralizedVoronoi snapshot() const;
 
  private:
+  // (x, y) of padded index i without an integer division (the quotient from a floating
+  // reciprocal, corrected by one).
+  [[nodiscard]] std::pair<int, int> xy(std::size_t i) const {
+    auto y = static_cast<std::int64_t>(static_cast<double>(i) * inv_pw_);
+    std::int64_t r = static_cast<std::int64_t>(i) - y * pw_;
+    if (r < 0) {
+      --y, r += pw_;
+    } else if (r >= pw_) {
+      ++y, r -= pw_;
+    }
+    return {static_cast<int>(r), static_cast<int>(y)};
+  }
   [[nodiscard]] std::size_t pidx(int x, int y) const {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(pw_) +
            static_cast<std::size_t>(x);
@@ -177,6 +189,7 @@ class DynamicGvd {
   GvdOptions options_;
   GridGeometry geometry_;
   int pw_ = 0, ph_ = 0;  // padded size (one cell on each side)
+  double inv_pw_ = 0.0;  // 1 / pw_
   // Per padded cell: 0 free, 1 blocked, 2 outside and not an obstacle (border not blocked).
   std::vector<std::uint8_t> state_;
   std::vector<std::int64_t> col_d_;  // squared vertical distance to the nearest site in the column

@@ -288,29 +288,28 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
            ++xx)
         f(static_cast<std::size_t>(yy * w + xx));
   };
-  // 1. Undo the stored spurs that pass near a dirty cell.
-  std::vector<std::size_t> touched, candidates;
-  for (const std::size_t d : dirty)
-    around(d, [&](std::size_t c) {
-      if (owner_[c] < 0) return;
-      const auto e = static_cast<std::size_t>(owner_[c]);
-      const auto it = spurs_.find(e);
-      for (const std::size_t p : it->second) {
-        owner_[p] = -1;
-        touched.push_back(p);
-      }
-      spurs_.erase(it);
-      candidates.push_back(e);
-    });
-  // 2. The ends whose spur may pass near a dirty cell now: walk out from the set cells near the
-  // dirty ones through cells of at most two neighbours, no farther than the longest spur.
+  // 1. Undo the stored spurs that pass near a dirty cell, and 2. collect the set cells near the
+  // dirty ones (one pass over the 5x5 neighbourhoods): the ends whose spur may pass near a dirty
+  // cell now are found by walking out from them through cells of at most two neighbours, no
+  // farther than the longest spur.
   if (++epoch_ == 0) {
     std::fill(seen_.begin(), seen_.end(), 0U);
     epoch_ = 1;
   }
+  std::vector<std::size_t> touched, candidates;
   std::vector<std::pair<std::size_t, int>> queue;
   for (const std::size_t d : dirty)
     around(d, [&](std::size_t c) {
+      if (owner_[c] >= 0) {
+        const auto e = static_cast<std::size_t>(owner_[c]);
+        const auto it = spurs_.find(e);
+        for (const std::size_t p : it->second) {
+          owner_[p] = -1;
+          touched.push_back(p);
+        }
+        spurs_.erase(it);
+        candidates.push_back(e);
+      }
       if (!in[c] || seen_[c] == epoch_) return;
       seen_[c] = epoch_;
       queue.emplace_back(c, 0);
