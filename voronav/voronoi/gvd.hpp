@@ -18,13 +18,19 @@
 //     max(spur_min_length, spur_clearance_ratio * clearance at the junction) is removed, all ends
 //     of a round at once, then the diagram is thinned again (prune_rounds rounds).
 //
+// The full build works inside the bounding box of the non-blocked cells only (the cells outside
+// are obstacles at distance 0 shielded by the box's frame; their labels are one component), so on
+// a mostly unknown map its cost follows the known free area, not the grid.
+//
 // DynamicGvd keeps the state so that changed cells (a door closes, an obstacle moves) update
 // everything locally, in the spirit of the dynamic brushfire of Lau, Sprunk and Burgard (2013):
 //  - distance: the columns holding changed cells are recomputed, then in every row whose column
 //    data changed only the segment that can see a changed column (|x - x'|^2 <= old d^2, found by
 //    scanning out from the changed columns; the distance is 1-Lipschitz so the scan stops at the
 //    first cell that fails) is recomputed, by the parabola envelope over the columns within the
-//    largest possible new distance (bounded by the unchanged cells just outside the segment). The
+//    largest possible new distance (bounded by the unchanged cells just outside the segment); in a
+//    row where every changed column was raised (obstacles removed) only the runs of cells whose
+//    site was in a changed column are recomputed (every other candidate got no better). The
 //    nearest site is the lexicographic minimum of (squared distance, column, row) in both builds;
 //  - obstacle labels: added cells take the label they touch; a merge relabels the smaller
 //    components, a split is found by flooding from the remaining neighbours of the removed cells

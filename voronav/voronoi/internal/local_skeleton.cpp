@@ -246,6 +246,7 @@ void ParallelPruning::build(const std::vector<std::uint8_t>& in,
   const std::size_t n = in.size();
   owner_.assign(n, -1);
   seen_.clear();  // allocated by the first update
+  near_.clear();
   epoch_ = 0;
   spurs_.clear();
   std::vector<std::size_t> path;
@@ -269,6 +270,7 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   d2_ = &d2;
   if (seen_.size() != in.size()) {
     seen_.assign(in.size(), 0);
+    near_.assign(in.size(), 0);
     epoch_ = 0;
   }
   std::vector<std::size_t> dirty;
@@ -294,12 +296,15 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   // farther than the longest spur.
   if (++epoch_ == 0) {
     std::fill(seen_.begin(), seen_.end(), 0U);
+    std::fill(near_.begin(), near_.end(), 0U);
     epoch_ = 1;
   }
   std::vector<std::size_t> touched, candidates;
   std::vector<std::pair<std::size_t, int>> queue;
   for (const std::size_t d : dirty)
     around(d, [&](std::size_t c) {
+      if (near_[c] == epoch_) return;  // the neighbourhoods of nearby dirty cells overlap
+      near_[c] = epoch_;
       if (owner_[c] >= 0) {
         const auto e = static_cast<std::size_t>(owner_[c]);
         const auto it = spurs_.find(e);

@@ -115,7 +115,8 @@ class ParallelPruning {
   std::vector<std::uint8_t> out_;
   std::vector<std::int32_t> owner_;  // end of the pruned spur through the cell (-1 none)
   std::unordered_map<std::size_t, std::vector<std::size_t>> spurs_;  // end -> removed path
-  std::vector<std::uint32_t> seen_;                                  // scratch of update()
+  std::vector<std::uint32_t> seen_;  // scratch of update(): queued cells
+  std::vector<std::uint32_t> near_;  // scratch of update(): cells near a dirty one, visited
   std::uint32_t epoch_ = 0;
 };
 
