@@ -6,8 +6,9 @@
 //                 items = changes, so the time per change is 1 / items_per_second
 // Maps: willow, warehouse (../shared/data/ros_maps), depot, turtlebot3_world (data/ros_maps),
 // lab_intel (data/floorplans); maps that are missing are skipped. Counters of the update runs
-// say which mechanism did the work: rows and row cells of the EDT, cells the re-thinning and
-// re-pruning examined, label repartitions (merges/splits) per change.
+// say which mechanism did the work: rows and row cells of the EDT, cells whose distance or site
+// changed, cells the re-thinning and re-pruning examined, steps of the longest stored thinning
+// run, label repartitions (merges/splits) per change.
 // bench/topology_dynamic.sh turns the JSON output into bench/results/topology_dynamic.md.
 #include <benchmark/benchmark.h>
 
