@@ -26,8 +26,9 @@ lines = ["<!-- dynamic-gvd:begin -->", "## Dynamic GVD: full build and per-chang
          "shared, so absolute times are inflated and the ratios are the figures to compare). CPU "
          "time. One update iteration = 10 accumulated 3x3 obstacle insertions at random free places, "
          "then their removal (20 `DynamicGvd::update` calls); per change = iteration / 20. Counters "
-         "per change say where the work went: rows and cells of the row segments recomputed by the "
-         "EDT, cells the local re-thinning/re-pruning examined, label merges/splits.", "",
+         "per change say where the work went: rows of the EDT that were rescanned and the cells it "
+         "recomputed (in rows where only removals changed a column: the cells whose nearest "
+         "obstacle was in a changed column), cells the local re-thinning/re-pruning examined, label merges/splits.", "",
          "| map | cells | free cells | full build ms | per change ms | full / per change | EDT rows | EDT row cells | skeleton cells | repartitions |",
          "|---|---|---|---|---|---|---|---|---|---|"]
 for name in ["willow", "warehouse", "depot", "lab_intel", "turtlebot3_world"]:

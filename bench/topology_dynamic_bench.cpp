@@ -6,8 +6,9 @@
 //                 items = changes, so the time per change is 1 / items_per_second
 // Maps: willow, warehouse (../shared/data/ros_maps), depot, turtlebot3_world (data/ros_maps),
 // lab_intel (data/floorplans); maps that are missing are skipped. Counters of the update runs
-// say which mechanism did the work: rows and row cells of the EDT, cells the re-thinning and
-// re-pruning examined, label repartitions (merges/splits) per change.
+// say which mechanism did the work: rows and row cells of the EDT, cells whose distance or site
+// changed, cells the re-thinning and re-pruning examined, steps of the longest stored thinning
+// run, label repartitions (merges/splits) per change.
 // bench/topology_dynamic.sh turns the JSON output into bench/results/topology_dynamic.md.
 #include <benchmark/benchmark.h>
 
@@ -72,7 +73,7 @@ void update(benchmark::State& state, const BinaryGrid* map) {
   }
   std::vector<voronoi::CellChange> changes(9);
   std::size_t k = 0;
-  double rows = 0, row_cells = 0, skel = 0, repart = 0, changes_done = 0;
+  double rows = 0, row_cells = 0, skel = 0, repart = 0, changes_done = 0, steps = 0, dist = 0;
   auto apply = [&](Cell c, bool add) {
     int n = 0;
     for (int dy = -1; dy <= 1; ++dy)
@@ -83,6 +84,8 @@ void update(benchmark::State& state, const BinaryGrid* map) {
     row_cells += static_cast<double>(st.row_cells);
     skel += static_cast<double>(st.skeleton_work);
     repart += st.labels_repartitioned ? 1.0 : 0.0;
+    steps += st.thinning_steps;
+    dist += static_cast<double>(st.changed_distances);
     changes_done += 1.0;
   };
   for (auto _ : state) {
@@ -99,6 +102,8 @@ void update(benchmark::State& state, const BinaryGrid* map) {
   state.counters["row_cells_per_change"] = row_cells / changes_done;
   state.counters["skeleton_cells_per_change"] = skel / changes_done;
   state.counters["repartitions_per_change"] = repart / changes_done;
+  state.counters["thinning_steps"] = steps / changes_done;
+  state.counters["changed_distances_per_change"] = dist / changes_done;
 }
 
 }  // namespace

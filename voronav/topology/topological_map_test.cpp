@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <map>
 #include <set>
 
 #include "voronav/core/error.hpp"
@@ -201,6 +202,65 @@ TEST(TopologicalPlanner, PlansThroughTheGraphOnTheGrid) {
   EXPECT_EQ(planner.plan(g, {0, 0}, {70, 18}).status, planning::PlanStatus::kStartOccupied);
   EXPECT_EQ(planner.plan(g, {3, 3}, {25, 0}).status, planning::PlanStatus::kGoalOccupied);
   EXPECT_EQ(planner.plan(g, {3, 3}, {500, 0}).status, planning::PlanStatus::kOutOfMap);
+}
+
+// Depot-like hall with closed boxes (enclosed free pockets, like depot's shelves whose grey
+// interior is free under its yaml thresholds) and boxes with an opening: the regions of one
+// connected free area are connected in the graph; an enclosed pocket has no edge.
+TEST(TopologicalMap, RegionsAreConnectedExactlyWhereTheFreeSpaceIs) {
+  for (int open_boxes = 0; open_boxes <= 3; ++open_boxes) {
+    BinaryGrid g(GridGeometry{120, 60, 0.1, {}}, 0);
+    for (int k = 0; k < 3; ++k) {  // 3 boxes 20x20 with a one-cell wall, 14 cells apart
+      const int x0 = 10 + 36 * k, y0 = 25;
+      fill_rect(g, x0, y0, x0 + 19, y0 + 19);
+      fill_rect(g, x0 + 1, y0 + 1, x0 + 18, y0 + 18, 0);
+      if (k < open_boxes) fill_rect(g, x0 + 8, y0, x0 + 11, y0, 0);  // a 4-cell door
+    }
+    const TopologicalMap m = build_topological_map(g);
+    // Free components (4-connected) and graph components (union-find on the edges).
+    std::vector<int> comp(g.size(), -1);
+    int ncomp = 0;
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      if (g[i] || comp[i] >= 0) continue;
+      std::vector<Cell> stack{g.cell_at(i)};
+      comp[i] = ncomp;
+      while (!stack.empty()) {
+        const Cell c = stack.back();
+        stack.pop_back();
+        for (const Cell q : {c + Cell{1, 0}, c + Cell{-1, 0}, c + Cell{0, 1}, c + Cell{0, -1}}) {
+          if (!g.contains(q) || g[q] || comp[g.index(q)] >= 0) continue;
+          comp[g.index(q)] = ncomp;
+          stack.push_back(q);
+        }
+      }
+      ++ncomp;
+    }
+    EXPECT_EQ(ncomp, 1 + 3 - open_boxes);
+    std::vector<int> parent(m.regions.size());
+    for (std::size_t r = 0; r < parent.size(); ++r)
+      parent[r] = static_cast<int>(r);
+    std::function<int(int)> find = [&](int x) {
+      return parent[static_cast<std::size_t>(x)] == x ? x
+                                                      : find(parent[static_cast<std::size_t>(x)]);
+    };
+    for (const TopoEdge& e : m.edges)
+      parent[static_cast<std::size_t>(find(e.a))] = find(e.b);
+    std::map<int, std::set<int>> pieces;  // free component -> graph components of its regions
+    for (std::size_t i = 0; i < g.size(); ++i)
+      if (m.region[i] >= 0) pieces[comp[i]].insert(find(m.region[i]));
+    EXPECT_EQ(static_cast<int>(pieces.size()), ncomp) << open_boxes;
+    for (const auto& [c, roots] : pieces)
+      EXPECT_EQ(roots.size(), 1U) << "free component " << c << ", " << open_boxes << " open";
+    // A pocket's region has no edge; an opened box is linked to the hall.
+    std::set<int> linked;
+    for (const TopoEdge& e : m.edges)
+      linked.insert(e.a), linked.insert(e.b);
+    for (int k = 0; k < 3; ++k) {
+      const int r = m.region[(Cell{20 + 36 * k, 35})];
+      ASSERT_GE(r, 0);
+      EXPECT_EQ(linked.contains(r), k < open_boxes) << k << " " << open_boxes;
+    }
+  }
 }
 
 TEST(TopologicalMap, RejectsBadInput) {

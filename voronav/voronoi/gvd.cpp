@@ -111,30 +111,63 @@ DynamicGvd::DynamicGvd(const BinaryGrid& blocked, const GvdOptions& options)
   check_options(options);
   pw_ = geometry_.width + 2;
   ph_ = geometry_.height + 2;
+  inv_pw_ = 1.0 / static_cast<double>(pw_);
   const std::size_t n = static_cast<std::size_t>(pw_) * static_cast<std::size_t>(ph_);
   state_.assign(n, options.border_is_blocked ? kBlockedCell : kOutside);
-  for (int y = 0; y < geometry_.height; ++y)
+  const auto src = blocked.data();
+  for (int y = 0; y < geometry_.height; ++y) {
+    const std::uint8_t* in =
+        &src[static_cast<std::size_t>(y) * static_cast<std::size_t>(geometry_.width)];
+    std::uint8_t* out = &state_[pidx(1, y + 1)];
     for (int x = 0; x < geometry_.width; ++x)
-      state_[pidx(x + 1, y + 1)] = blocked[Cell{x, y}] ? kBlockedCell : kFreeCell;
-  col_d_.assign(n, kNone);
-  col_arg_.assign(n, -1);
-  d2_.assign(n, kNone);
-  site_.assign(n, -1);
+      out[x] = in[x] ? kBlockedCell : kFreeCell;
+  }
+  // Sparse build: every cell outside the bounding box of the non-blocked cells is an obstacle
+  // whose own distance is 0, and the obstacles just outside the box shield it from the rest, so
+  // the EDT, the labels and the raw diagram are computed inside the box (plus its one-cell frame)
+  // only; on a map that is mostly unknown (= blocked) the cost follows the known free area.
+  int bx0 = pw_, by0 = ph_, bx1 = -1, by1 = -1;
+  for (int y = 0; y < ph_; ++y) {
+    const std::uint8_t* row = &state_[pidx(0, y)];
+    int first = -1, lastx = -1;
+    for (int x = 0; x < pw_; ++x)
+      if (row[x] != kBlockedCell) {
+        if (first < 0) first = x;
+        lastx = x;
+      }
+    if (first < 0) continue;
+    bx0 = std::min(bx0, first), bx1 = std::max(bx1, lastx);
+    by0 = std::min(by0, y), by1 = y;
+  }
+  // Outside the box: blocked, its own site. (The box never touches the padding ring when the
+  // border is blocked; otherwise it is the whole raster.)
+  col_d_.assign(n, 0);
+  col_arg_.resize(n);
+  d2_.assign(n, 0);
+  site_.resize(n);
+  for (int y = 0; y < ph_; ++y)
+    std::fill_n(&col_arg_[pidx(0, y)], pw_, y);
+  for (std::size_t i = 0; i < n; ++i)
+    site_[i] = static_cast<std::int32_t>(i);
   label_.assign(n, -1);
   raw_.assign(n, 0);
-  visit_.assign(n, -1);
-  mark_.assign(n, 0);
-  d2_changed_.assign(n, 0);
-  for (int x = 0; x < pw_; ++x)
-    column_pass(x, nullptr, {-1, -1});
-  for (int y = 0; y < ph_; ++y)
-    row_pass(y);
   max_d2_ = 0;
-  for (const std::int64_t d : d2_)
-    max_d2_ = std::max(max_d2_, d);
-  full_labels();
-  for (std::size_t i = 0; i < n; ++i)
-    raw_[i] = raw_mark(i) ? 1 : 0;
+  if (bx1 >= 0) {
+    for (int x = bx0; x <= bx1; ++x)
+      column_pass(x, nullptr, by0 == 0 && by1 == ph_ - 1 ? std::pair{-1, -1} : std::pair{by0, by1});
+    for (int y = by0; y <= by1; ++y)
+      row_pass(y, std::max(0, bx0 - 1), std::min(pw_ - 1, bx1 + 1));
+    for (int y = by0; y <= by1; ++y)
+      for (int x = bx0; x <= bx1; ++x)
+        max_d2_ = std::max(max_d2_, d2_[pidx(x, y)]);
+  }
+  full_labels(bx0, by0, bx1, by1);
+  if (bx1 >= 0)
+    for (int y = by0; y <= by1; ++y)
+      for (int x = bx0; x <= bx1; ++x) {
+        const std::size_t i = pidx(x, y);
+        raw_[i] = raw_mark(i) ? 1 : 0;
+      }
   build_skeleton();
 }
 
@@ -149,7 +182,7 @@ void DynamicGvd::grow_span(std::unordered_map<int, std::pair<int, int>>& spans,
   }
 }
 
-void DynamicGvd::column_pass(int x, std::vector<std::pair<int, bool>>* changed_rows,
+void DynamicGvd::column_pass(int x, std::vector<ChangedRow>* changed_rows,
                              std::pair<int, int> span) {
   // 1-D nearest site along the column: forward then backward scan (ties: the lower row). Only
   // the rows between the nearest obstacles outside the changed span can change: those obstacles
@@ -187,24 +220,29 @@ void DynamicGvd::column_pass(int x, std::vector<std::pair<int, bool>>* changed_r
       // Lowered: the new (distance, row) is lexicographically smaller and exists.
       const bool lowered =
           d >= 0 && (col_d_[i] < 0 || d < col_d_[i] || (d == col_d_[i] && best < col_arg_[i]));
-      changed_rows->emplace_back(y, !lowered);
+      changed_rows->push_back(
+          {y, !lowered, col_arg_[i] < 0 ? -1 : static_cast<std::int32_t>(pidx(x, col_arg_[i]))});
     }
     col_d_[i] = d;
     col_arg_[i] = best;
   }
 }
 
-void DynamicGvd::row_pass(int y) {
+void DynamicGvd::row_pass(int y, int x0, int x1) {
+  // Columns [x0, x1] only: the cells outside are obstacles (distance 0) that hide everything
+  // beyond them from the cells inside, so the envelope over the window is exact there.
   static thread_local Envelope env;
   static thread_local std::vector<std::int64_t> d;
   static thread_local std::vector<std::int32_t> arg;
-  d.resize(static_cast<std::size_t>(pw_));
-  arg.resize(static_cast<std::size_t>(pw_));
-  env.run(&col_d_[pidx(0, y)], pw_, d.data(), arg.data());
-  for (int x = 0; x < pw_; ++x) {
+  const int n = x1 - x0 + 1;
+  d.resize(static_cast<std::size_t>(n));
+  arg.resize(static_cast<std::size_t>(n));
+  env.run(&col_d_[pidx(x0, y)], n, d.data(), arg.data());
+  for (int x = x0; x <= x1; ++x) {
     const std::size_t i = pidx(x, y);
-    const std::int32_t ax = arg[static_cast<std::size_t>(x)];
-    d2_[i] = d[static_cast<std::size_t>(x)];
+    const auto k = static_cast<std::size_t>(x - x0);
+    const std::int32_t ax = arg[k] < 0 ? -1 : arg[k] + x0;
+    d2_[i] = d[k];
     site_[i] = ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_[pidx(ax, y)]));
   }
 }
@@ -306,13 +344,33 @@ int DynamicGvd::relabel_from(std::size_t seed, std::int32_t id, std::vector<std:
   return static_cast<int>(seen.size());
 }
 
-void DynamicGvd::full_labels() {
-  std::fill(label_.begin(), label_.end(), -1);
+void DynamicGvd::full_labels(int bx0, int by0, int bx1, int by1) {
   label_size_.clear();
   next_label_ = 0;
   std::vector<std::size_t> cells;
-  for (std::size_t i = 0; i < state_.size(); ++i)
-    if (state_[i] == kBlockedCell && label_[i] < 0) {
+  // Sparse: the obstacle cells outside the box grown by one form one component (the padding
+  // ring is blocked around the box); it is labelled without a flood, then flooded from its
+  // inner frame into the box.
+  const int fx0 = bx0 - 1, fy0 = by0 - 1, fx1 = bx1 + 1, fy1 = by1 + 1;
+  if (bx1 >= 0 && fx0 >= 0 && fy0 >= 0 && fx1 < pw_ && fy1 < ph_) {
+    const std::int32_t id = next_label_++;
+    std::int64_t count = 0;
+    for (int y = 0; y < ph_; ++y)
+      for (int x = 0; x < pw_; ++x)
+        if (x < fx0 || x > fx1 || y < fy0 || y > fy1) {
+          label_[pidx(x, y)] = id;
+          ++count;
+        }
+    relabel_from(pidx(fx0, fy0), id, &cells);
+    count += static_cast<std::int64_t>(cells.size());
+    label_size_.push_back(count);
+  } else {
+    bx0 = 0, by0 = 0, bx1 = pw_ - 1, by1 = ph_ - 1;
+  }
+  for (int y = std::max(0, by0 - 1); y <= std::min(ph_ - 1, by1 + 1); ++y)
+    for (int x = std::max(0, bx0 - 1); x <= std::min(pw_ - 1, bx1 + 1); ++x) {
+      const std::size_t i = pidx(x, y);
+      if (state_[i] != kBlockedCell || label_[i] >= 0) continue;
       cells.clear();
       relabel_from(i, next_label_++, &cells);
       label_size_.push_back(static_cast<std::int64_t>(cells.size()));
@@ -522,11 +580,7 @@ bool DynamicGvd::update_labels(const std::vector<std::size_t>& added,
 bool DynamicGvd::raw_mark(std::size_t i) const {
   if (state_[i] != kFreeCell || site_[i] < 0) return false;
   const auto s = static_cast<std::size_t>(site_[i]);
-  const int sx = static_cast<int>(s % static_cast<std::size_t>(pw_));
-  const int sy = static_cast<int>(s / static_cast<std::size_t>(pw_));
-  const double sep = std::max(options_.site_separation, options_.site_separation_ratio *
-                                                            std::sqrt(static_cast<double>(d2_[i])));
-  const double sep2 = sep * sep;
+  double sep2 = -1.0;  // computed when first needed
   const std::ptrdiff_t offs[4] = {1, -1, pw_, -pw_};
   for (const std::ptrdiff_t off : offs) {
     const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) + off);
@@ -537,16 +591,19 @@ bool DynamicGvd::raw_mark(std::size_t i) const {
       continue;
     }
     if (state_[j] != kFreeCell || site_[j] < 0 || site_[j] == site_[i]) continue;
+    if (!(d2_[i] > d2_[j] || (d2_[i] == d2_[j] && i < j))) continue;  // the other one is marked
     const auto t = static_cast<std::size_t>(site_[j]);
-    bool different = label_[s] != label_[t];
-    if (!different) {
-      const int tx = static_cast<int>(t % static_cast<std::size_t>(pw_));
-      const int ty = static_cast<int>(t / static_cast<std::size_t>(pw_));
-      const double dx = sx - tx, dy = sy - ty;
-      different = dx * dx + dy * dy > sep2;
+    if (label_[s] != label_[t]) return true;
+    if (sep2 < 0.0) {
+      const double sep =
+          std::max(options_.site_separation,
+                   options_.site_separation_ratio * std::sqrt(static_cast<double>(d2_[i])));
+      sep2 = sep * sep;
     }
-    if (!different) continue;
-    if (d2_[i] > d2_[j] || (d2_[i] == d2_[j] && i < j)) return true;
+    const auto [sx, sy] = xy(s);
+    const auto [tx, ty] = xy(t);
+    const double dx = sx - tx, dy = sy - ty;
+    if (dx * dx + dy * dy > sep2) return true;
   }
   return false;
 }
@@ -609,6 +666,11 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
   // must stay as it was (a removed-then-added cell keeps a valid label below).
   stats.changed_cells = added.size() + removed.size();
   if (stats.changed_cells == 0) return stats;
+  if (mark_.empty()) {  // scratch of the updates, allocated on the first one
+    visit_.assign(state_.size(), -1);
+    mark_.assign(state_.size(), 0);
+    d2_changed_.assign(state_.size(), 0);
+  }
 
   // Distance field: recompute the touched columns between the nearest obstacles above and below
   // the changed cells, then in each row whose column data changed the segments that can see a
@@ -620,37 +682,53 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     grow_span(column_rows, i);
   for (const std::size_t i : removed)
     grow_span(column_rows, i);
-  std::vector<std::tuple<int, int, bool>> row_cols;  // (row, column, raised) that changed
-  std::vector<std::pair<int, bool>> rows;
+  // (row, column, raised, old site of the column in that row) that changed
+  std::vector<std::tuple<int, int, bool, std::int32_t>> row_cols;
+  std::vector<ChangedRow> rows;
   for (const int x : columns) {
     rows.clear();
     column_pass(x, &rows, column_rows[x]);
-    for (const auto& [y, raised] : rows)
-      row_cols.emplace_back(y, x, raised);
+    for (const ChangedRow& r : rows)
+      row_cols.emplace_back(r.y, x, r.raised, r.old_site);
   }
   std::sort(row_cols.begin(), row_cols.end());
   std::vector<std::size_t> changed;
   std::vector<std::pair<int, int>> ranges;
   std::vector<int> lowered_cols;
+  std::vector<std::int32_t> old_sites;
   for (std::size_t a = 0; a < row_cols.size();) {
     const int y = std::get<0>(row_cols[a]);
     ranges.clear();
     lowered_cols.clear();
-    bool raised = false;
+    old_sites.clear();
+    bool raised = false, lowered = false;
     for (; a < row_cols.size() && std::get<0>(row_cols[a]) == y; ++a) {
-      const int xc = std::get<1>(row_cols[a]);
       raised |= std::get<2>(row_cols[a]);
-      lowered_cols.push_back(xc);
-      auto sees = [&](int x) {
-        const std::int64_t v = d2_[pidx(x, y)];
+      lowered |= !std::get<2>(row_cols[a]);
+      lowered_cols.push_back(std::get<1>(row_cols[a]));  // sorted, distinct
+      if (std::get<3>(row_cols[a]) >= 0) old_sites.push_back(std::get<3>(row_cols[a]));
+    }
+    // The cells that can see column xc (|x - xc|^2 <= d^2) form an interval around it (the
+    // distance is 1-Lipschitz). For a run of adjacent columns c0..c1 the union of the intervals
+    // is [left end seen from c0, right end seen from c1]: a cell outside the run seen from any
+    // column of the run is seen from the nearer run end too.
+    const std::int64_t* drow = &d2_[pidx(0, y)];
+    for (std::size_t k = 0; k < lowered_cols.size();) {
+      std::size_t e = k;
+      while (e + 1 < lowered_cols.size() && lowered_cols[e + 1] == lowered_cols[e] + 1)
+        ++e;
+      const int c0 = lowered_cols[k], c1 = lowered_cols[e];
+      auto sees = [&](int x, int xc) {
+        const std::int64_t v = drow[x];
         return v < 0 || std::int64_t{x - xc} * (x - xc) <= v;
       };
-      int l = xc, r = xc;
-      while (l > 0 && sees(l - 1))
+      int l = c0, r = c1;
+      while (l > 0 && sees(l - 1, c0))
         --l;
-      while (r + 1 < pw_ && sees(r + 1))
+      while (r + 1 < pw_ && sees(r + 1, c1))
         ++r;
       ranges.emplace_back(l, r);
+      k = e + 1;
     }
     std::sort(ranges.begin(), ranges.end());
     std::size_t m = 0;
@@ -662,11 +740,34 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     }
     ranges.resize(m + 1);
     for (const auto& [l, r] : ranges) {
-      if (raised)
+      if (raised && !lowered) {
+        // Only raised columns: every other column's candidate is unchanged or worse, so a cell
+        // changes only when its nearest site was in a changed column (one of old_sites; the
+        // site of a cell is the site of its column in its row). Those runs are recomputed,
+        // bounded by the unchanged cells around them.
+        auto hit = [&](int x) {
+          const std::int32_t st = site_[pidx(x, y)];
+          return st >= 0 && std::find(old_sites.begin(), old_sites.end(), st) != old_sites.end();
+        };
+        for (int x = l; x <= r;) {
+          if (!hit(x)) {
+            ++x;
+            continue;
+          }
+          int e = x;
+          while (e + 1 <= r && hit(e + 1))
+            ++e;
+          row_segment(y, x, e, &changed);
+          stats.row_cells += static_cast<std::size_t>(e - x + 1);
+          x = e + 1;
+        }
+      } else if (raised) {
         row_segment(y, l, r, &changed);
-      else
+        stats.row_cells += static_cast<std::size_t>(r - l + 1);
+      } else {
         row_lower(y, l, r, lowered_cols, &changed);
-      stats.row_cells += static_cast<std::size_t>(r - l + 1);
+        stats.row_cells += static_cast<std::size_t>(r - l + 1);
+      }
     }
     ++stats.recomputed_rows;
   }

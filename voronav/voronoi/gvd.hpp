@@ -18,13 +18,19 @@
 //     max(spur_min_length, spur_clearance_ratio * clearance at the junction) is removed, all ends
 //     of a round at once, then the diagram is thinned again (prune_rounds rounds).
 //
+// The full build works inside the bounding box of the non-blocked cells only (the cells outside
+// are obstacles at distance 0 shielded by the box's frame; their labels are one component), so on
+// a mostly unknown map its cost follows the known free area, not the grid.
+//
 // DynamicGvd keeps the state so that changed cells (a door closes, an obstacle moves) update
 // everything locally, in the spirit of the dynamic brushfire of Lau, Sprunk and Burgard (2013):
 //  - distance: the columns holding changed cells are recomputed, then in every row whose column
 //    data changed only the segment that can see a changed column (|x - x'|^2 <= old d^2, found by
 //    scanning out from the changed columns; the distance is 1-Lipschitz so the scan stops at the
 //    first cell that fails) is recomputed, by the parabola envelope over the columns within the
-//    largest possible new distance (bounded by the unchanged cells just outside the segment). The
+//    largest possible new distance (bounded by the unchanged cells just outside the segment); in a
+//    row where every changed column was raised (obstacles removed) only the runs of cells whose
+//    site was in a changed column are recomputed (every other candidate got no better). The
 //    nearest site is the lexicographic minimum of (squared distance, column, row) in both builds;
 //  - obstacle labels: added cells take the label they touch; a merge relabels the smaller
 //    components, a split is found by flooding from the remaining neighbours of the removed cells
@@ -138,6 +144,18 @@ class DynamicGvd {
   [[nodiscard]] GeneralizedVoronoi snapshot() const;
 
  private:
+  // (x, y) of padded index i without an integer division (the quotient from a floating
+  // reciprocal, corrected by one).
+  [[nodiscard]] std::pair<int, int> xy(std::size_t i) const {
+    auto y = static_cast<std::int64_t>(static_cast<double>(i) * inv_pw_);
+    std::int64_t r = static_cast<std::int64_t>(i) - y * pw_;
+    if (r < 0) {
+      --y, r += pw_;
+    } else if (r >= pw_) {
+      ++y, r -= pw_;
+    }
+    return {static_cast<int>(r), static_cast<int>(y)};
+  }
   [[nodiscard]] std::size_t pidx(int x, int y) const {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(pw_) +
            static_cast<std::size_t>(x);
@@ -145,21 +163,27 @@ class DynamicGvd {
   // Column x from scratch (span {-1, -1}) or around the changed rows span (the rows between
   // the nearest obstacles outside it); appends the rows whose column data changed.
   // (row, raised) pairs: raised when the new column value is not lexicographically smaller.
-  void column_pass(int x, std::vector<std::pair<int, bool>>* changed_rows,
-                   std::pair<int, int> span);
+  struct ChangedRow {
+    int y;
+    bool raised;
+    std::int32_t old_site;  // padded index of the column's old site in row y (-1 none)
+  };
+  void column_pass(int x, std::vector<ChangedRow>* changed_rows, std::pair<int, int> span);
   // Row y where only the columns `cols` changed and all were lowered: min of the old site and
   // the changed columns' sites for the cells [xa, xb].
   void row_lower(int y, int xa, int xb, const std::vector<int>& cols,
                  std::vector<std::size_t>* changed);
   void grow_span(std::unordered_map<int, std::pair<int, int>>& spans, std::size_t i) const;
-  void row_pass(int y);
+  void row_pass(int y, int x0, int x1);
   // Recomputes the cells [xa, xb] of row y exactly from the column data (window of columns
   // bounded by the unchanged cells xa-1 and xb+1); appends the cells that changed.
   void row_segment(int y, int xa, int xb, std::vector<std::size_t>* changed);
   // Floods the blocked component of seed with id; returns how many distinct old labels it met.
   // The flooded cells are appended to `cells` when given.
   int relabel_from(std::size_t seed, std::int32_t id, std::vector<std::size_t>* cells = nullptr);
-  void full_labels();
+  // Labels of all obstacle cells; the cells outside the box [bx0, bx1] x [by0, by1] of the
+  // non-blocked cells are all blocked (bx1 < 0: no box).
+  void full_labels(int bx0, int by0, int bx1, int by1);
   // Labels after a batch; appends the blocked cells whose label changed to `relabeled`.
   bool update_labels(const std::vector<std::size_t>& added, const std::vector<std::size_t>& removed,
                      std::vector<std::size_t>* relabeled);
@@ -171,6 +195,7 @@ class DynamicGvd {
   GvdOptions options_;
   GridGeometry geometry_;
   int pw_ = 0, ph_ = 0;  // padded size (one cell on each side)
+  double inv_pw_ = 0.0;  // 1 / pw_
   // Per padded cell: 0 free, 1 blocked, 2 outside and not an obstacle (border not blocked).
   std::vector<std::uint8_t> state_;
   std::vector<std::int64_t> col_d_;  // squared vertical distance to the nearest site in the column

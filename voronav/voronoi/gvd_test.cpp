@@ -367,6 +367,48 @@ TEST(DynamicGvd, MergesAndSplitsEqualFullRebuild) {
   EXPECT_GT(merges, 200);
 }
 
+// Mostly blocked maps (the known area of a large unknown map): the sparse full build, which
+// works inside the box of the free cells, equals the state reached by updates from an all-free
+// map (whose build covers the whole grid) on distances, sites, labels and both diagrams.
+TEST(DynamicGvd, SparseBuildEqualsUpdatesFromAnOpenMap) {
+  int checked = 0;
+  for (std::uint32_t seed = 0; seed < 24; ++seed) {
+    std::mt19937 rng(9000 + seed);
+    const int w = 34 + static_cast<int>(rng() % 10), h = 26 + static_cast<int>(rng() % 10);
+    BinaryGrid g(w, h, 1);
+    // A free room with a few obstacles inside, away from the grid edges (or touching one).
+    const int x0 = 2 + static_cast<int>(rng() % 8), y0 = 2 + static_cast<int>(rng() % 6);
+    const int x1 = x0 + 10 + static_cast<int>(rng() % 12),
+              y1 = y0 + 8 + static_cast<int>(rng() % 8);
+    for (int y = y0; y <= std::min(y1, h - 1); ++y)
+      for (int x = x0; x <= std::min(x1, w - 1); ++x)
+        g[Cell{x, y}] = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int ox = x0 + 1 + static_cast<int>(rng() % 8),
+                oy = y0 + 1 + static_cast<int>(rng() % 6);
+      fill_rect(g, ox, oy, ox + static_cast<int>(rng() % 3), oy + static_cast<int>(rng() % 2));
+    }
+    if (seed % 4 == 1)  // a second free pocket
+      fill_rect(g, w - 5, h - 4, w - 3, h - 3), g[Cell{w - 4, h - 3}] = 0,
+                                                                  g[Cell{w - 3, h - 3}] = 0;
+    if (seed % 4 == 2)  // free cells at the grid edge
+      for (int x = x0; x <= x1 && x < w; ++x)
+        g[Cell{x, 0}] = 0, g[Cell{x, 1}] = 0;
+    GvdOptions o;
+    o.border_is_blocked = seed % 5 != 0;
+    DynamicGvd dyn(BinaryGrid(w, h, 0), o);
+    std::vector<CellChange> changes;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (g[Cell{x, y}]) changes.push_back({{x, y}, true});
+    (void)dyn.update(changes);
+    expect_equal(dyn.snapshot(), build_gvd(g, o), "seed " + std::to_string(seed));
+    if (::testing::Test::HasFatalFailure()) return;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 24);
+}
+
 TEST(DynamicGvd, SmallChangeRecomputesFewRows) {
   BinaryGrid g = random_room(5, 200, 150, 10);
   DynamicGvd dyn(g);

@@ -2,8 +2,35 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace voronav::voronoi::internal {
+namespace {
+
+// [lo, hi): the index range holding every set cell of `in` (empty: lo == hi). Scans 8 bytes at
+// a time (the sets are sparse).
+std::pair<std::size_t, std::size_t> set_range(const std::vector<std::uint8_t>& in) {
+  const std::size_t n = in.size();
+  auto word = [&](std::size_t i) {
+    std::uint64_t v = 0;
+    std::memcpy(&v, in.data() + i, 8);
+    return v;
+  };
+  std::size_t lo = 0;
+  while (lo + 8 <= n && word(lo) == 0)
+    lo += 8;
+  while (lo < n && in[lo] == 0)
+    ++lo;
+  if (lo == n) return {0, 0};
+  std::size_t hi = n;
+  while (hi >= lo + 8 && word(hi - 8) == 0)
+    hi -= 8;
+  while (hi > lo && in[hi - 1] == 0)
+    --hi;
+  return {lo, hi};
+}
+
+}  // namespace
 
 bool ParallelThinning::removable(const std::vector<std::uint8_t>& in, std::size_t c, int t) const {
   int nb[8];
@@ -42,11 +69,12 @@ void ParallelThinning::build(const std::vector<std::uint8_t>& in,
   key_ = &key;
   const std::size_t n = in.size();
   removed_at_.assign(n, kNever);
-  rec_of_.assign(n, -1);
-  seen_.assign(n, 0);
+  rec_of_.clear();  // the scratch of update() is allocated by the first update
+  seen_.clear();
   epoch_ = 0;
+  const auto [lo, hi] = set_range(in);  // sparse maps: only the range of the set is scanned
   std::vector<std::size_t> lists[4];
-  for (std::size_t c = 0; c < n; ++c)
+  for (std::size_t c = lo; c < hi; ++c)
     if (in[c]) lists[subfield(c)].push_back(c);
   int quiet = 0, last = -1;
   for (int t = 0;; ++t) {
@@ -67,7 +95,7 @@ void ParallelThinning::build(const std::vector<std::uint8_t>& in,
   }
   steps_ = last + 1;
   out_.assign(n, 0);
-  for (std::size_t c = 0; c < n; ++c)
+  for (std::size_t c = lo; c < hi; ++c)
     out_[c] = in[c] && removed_at_[c] == kNever ? 1 : 0;
 }
 
@@ -77,27 +105,36 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
                                             const std::vector<std::size_t>& key_changes,
                                             std::size_t* work) {
   key_ = &key;
-  struct Rec {
-    std::size_t cell;
-    std::uint8_t old_in;
-    std::int32_t old_removed_at;
-  };
-  std::vector<Rec> recs;
+  if (rec_of_.size() != in.size()) {
+    rec_of_.assign(in.size(), -1);
+    seen_.assign(in.size(), 0);
+    epoch_ = 0;
+  }
+  const auto w = static_cast<std::ptrdiff_t>(r_.width);
+  const auto uw = static_cast<std::size_t>(r_.width);
+  std::vector<Rec>& recs = recs_;
+  recs.clear();
   auto touch = [&](std::size_t c, std::uint8_t old_in) {
     if (rec_of_[c] >= 0) return;
     rec_of_[c] = static_cast<std::int32_t>(recs.size());
-    recs.push_back({c, old_in, removed_at_[c]});
+    recs.push_back({c, old_in, removed_at_[c], static_cast<std::int32_t>(c % uw),
+                    static_cast<std::int32_t>(c / uw)});
   };
   for (const Delta& d : in_changes) {
     touch(d.cell, d.old_value);
     removed_at_[d.cell] = kNever;  // decided again below
   }
-  std::vector<std::size_t> perm;  // cells of the set whose key changed: dirty at every step
+  // Cells of the set whose key changed: dirty at every step while they are alive (the key of a
+  // dead cell is never read again, so it leaves the list).
+  std::vector<Rec>& perm = perm_;
+  perm.clear();
   for (const std::size_t k : key_changes)
-    if (in[k]) perm.push_back(k);
+    if (in[k]) {
+      perm.push_back(
+          {k, 1, 0, static_cast<std::int32_t>(k % uw), static_cast<std::int32_t>(k / uw)});
+    }
 
-  const auto w = static_cast<std::ptrdiff_t>(r_.width);
-  std::vector<std::size_t> cand;
+  std::vector<std::size_t>& cand = cand_;
   const int old_steps = steps_;
   int quiet = 0, last = -1;
   for (int t = 0;; ++t) {
@@ -107,9 +144,8 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
     }
     const int sf = t & 3;
     cand.clear();
-    // The cells of the current subfield in the 3x3 neighbourhood of c.
-    auto add_around = [&](std::size_t c) {
-      const auto cx = static_cast<std::ptrdiff_t>(c) % w, cy = static_cast<std::ptrdiff_t>(c) / w;
+    // The cells of the current subfield in the 3x3 neighbourhood of c (at x, y).
+    auto add_around = [&](std::size_t c, std::int32_t cx, std::int32_t cy) {
       const std::ptrdiff_t fx = (cx & 1) == (sf & 1) ? 0 : -1;
       const std::ptrdiff_t fy = (cy & 1) == ((sf >> 1) & 1) ? 0 : -1;
       for (std::ptrdiff_t dy = fy; dy <= 1; dy += 2)
@@ -128,11 +164,12 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
       const bool new_alive = in[rec.cell] && removed_at_[rec.cell] >= t;
       if (old_alive == new_alive) continue;
       any_diff = true;
-      add_around(rec.cell);
+      add_around(rec.cell, rec.x, rec.y);
     }
+    std::erase_if(perm, [&](const Rec& p) { return removed_at_[p.cell] < t; });
     if (!any_diff && perm.empty()) break;  // the same state as the stored run from here on
-    for (const std::size_t k : perm)
-      add_around(k);
+    for (const Rec& p : perm)
+      add_around(p.cell, p.x, p.y);
     bool removed = false;
     for (const std::size_t c : cand) {
       if (removed_at_[c] < t) continue;
@@ -208,18 +245,20 @@ void ParallelPruning::build(const std::vector<std::uint8_t>& in,
   d2_ = &d2;
   const std::size_t n = in.size();
   owner_.assign(n, -1);
-  seen_.assign(n, 0);
+  seen_.clear();  // allocated by the first update
+  near_.clear();
   epoch_ = 0;
   spurs_.clear();
   std::vector<std::size_t> path;
-  for (std::size_t c = 0; c < n; ++c) {
+  const auto [lo, hi] = set_range(in);
+  for (std::size_t c = lo; c < hi; ++c) {
     if (!in[c] || skeleton_degree(in, r_, c) != 1 || !walk(in, c, max_len, path)) continue;
     for (const std::size_t p : path)
-      owner_[p] = static_cast<std::int64_t>(c);
+      owner_[p] = static_cast<std::int32_t>(c);
     spurs_.emplace(c, path);
   }
   out_.assign(n, 0);
-  for (std::size_t c = 0; c < n; ++c)
+  for (std::size_t c = lo; c < hi; ++c)
     out_[c] = in[c] && owner_[c] < 0 ? 1 : 0;
 }
 
@@ -229,6 +268,11 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
                                            const std::vector<std::size_t>& key_changes,
                                            double max_len, std::size_t* work) {
   d2_ = &d2;
+  if (seen_.size() != in.size()) {
+    seen_.assign(in.size(), 0);
+    near_.assign(in.size(), 0);
+    epoch_ = 0;
+  }
   std::vector<std::size_t> dirty;
   for (const Delta& d : in_changes)
     dirty.push_back(d.cell);
@@ -246,29 +290,31 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
            ++xx)
         f(static_cast<std::size_t>(yy * w + xx));
   };
-  // 1. Undo the stored spurs that pass near a dirty cell.
-  std::vector<std::size_t> touched, candidates;
-  for (const std::size_t d : dirty)
-    around(d, [&](std::size_t c) {
-      if (owner_[c] < 0) return;
-      const auto e = static_cast<std::size_t>(owner_[c]);
-      const auto it = spurs_.find(e);
-      for (const std::size_t p : it->second) {
-        owner_[p] = -1;
-        touched.push_back(p);
-      }
-      spurs_.erase(it);
-      candidates.push_back(e);
-    });
-  // 2. The ends whose spur may pass near a dirty cell now: walk out from the set cells near the
-  // dirty ones through cells of at most two neighbours, no farther than the longest spur.
+  // 1. Undo the stored spurs that pass near a dirty cell, and 2. collect the set cells near the
+  // dirty ones (one pass over the 5x5 neighbourhoods): the ends whose spur may pass near a dirty
+  // cell now are found by walking out from them through cells of at most two neighbours, no
+  // farther than the longest spur.
   if (++epoch_ == 0) {
     std::fill(seen_.begin(), seen_.end(), 0U);
+    std::fill(near_.begin(), near_.end(), 0U);
     epoch_ = 1;
   }
+  std::vector<std::size_t> touched, candidates;
   std::vector<std::pair<std::size_t, int>> queue;
   for (const std::size_t d : dirty)
     around(d, [&](std::size_t c) {
+      if (near_[c] == epoch_) return;  // the neighbourhoods of nearby dirty cells overlap
+      near_[c] = epoch_;
+      if (owner_[c] >= 0) {
+        const auto e = static_cast<std::size_t>(owner_[c]);
+        const auto it = spurs_.find(e);
+        for (const std::size_t p : it->second) {
+          owner_[p] = -1;
+          touched.push_back(p);
+        }
+        spurs_.erase(it);
+        candidates.push_back(e);
+      }
       if (!in[c] || seen_[c] == epoch_) return;
       seen_[c] = epoch_;
       queue.emplace_back(c, 0);
@@ -294,7 +340,7 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
     if (!in[e] || owner_[e] >= 0 || skeleton_degree(in, r_, e) != 1) continue;
     if (!walk(in, e, max_len, path)) continue;
     for (const std::size_t p : path) {
-      owner_[p] = static_cast<std::int64_t>(e);
+      owner_[p] = static_cast<std::int32_t>(e);
       touched.push_back(p);
     }
     spurs_.emplace(e, path);

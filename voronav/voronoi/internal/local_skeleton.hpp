@@ -73,6 +73,14 @@ class ParallelThinning {
   std::vector<std::int32_t> removed_at_;  // step at which the cell was removed (kNever: kept)
   int steps_ = 0;                         // >= 1 + the last step that removed a cell
   // Scratch for update().
+  struct Rec {
+    std::size_t cell;
+    std::uint8_t old_in;
+    std::int32_t old_removed_at;
+    std::int32_t x, y;  // coordinates (no division in the step loop)
+  };
+  std::vector<Rec> recs_, perm_;
+  std::vector<std::size_t> cand_;
   std::vector<std::int32_t> rec_of_;
   std::vector<std::uint32_t> seen_;
   std::uint32_t epoch_ = 0;
@@ -105,9 +113,10 @@ class ParallelPruning {
   double min_cells_ = 0.0;
   double ratio_ = 0.0;
   std::vector<std::uint8_t> out_;
-  std::vector<std::int64_t> owner_;  // end of the pruned spur through the cell (-1 none)
+  std::vector<std::int32_t> owner_;  // end of the pruned spur through the cell (-1 none)
   std::unordered_map<std::size_t, std::vector<std::size_t>> spurs_;  // end -> removed path
-  std::vector<std::uint32_t> seen_;                                  // scratch of update()
+  std::vector<std::uint32_t> seen_;  // scratch of update(): queued cells
+  std::vector<std::uint32_t> near_;  // scratch of update(): cells near a dirty one, visited
   std::uint32_t epoch_ = 0;
 };
 
