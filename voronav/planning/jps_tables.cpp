@@ -1,16 +1,19 @@
 // JPS+ jump-point tables (see jps.hpp): one sweep per direction, each cell's entry from its
-// neighbour's in that direction, so the build is O(8 cells).
+// neighbour's in that direction, so the build is O(8 cells); stored as 16-bit entries when the map
+// allows.
+#include <algorithm>
+
 #include "voronav/planning/internal/jps_data.hpp"
 
 namespace voronav::planning::internal {
 
 void build_jump_tables(JpsMapData& m) {
   const int w = m.width, h = m.height;
-  m.table.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 8, 0);
+  std::vector<std::int32_t> table(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 8, 0);
   auto at = [&](int x, int y, int d) -> std::int32_t& {
-    return m.table[8 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
-                        static_cast<std::size_t>(x)) +
-                   static_cast<std::size_t>(d)];
+    return table[8 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+                      static_cast<std::size_t>(x)) +
+                 static_cast<std::size_t>(d)];
   };
   auto extend = [](std::int32_t next) { return next > 0 ? next + 1 : next - 1; };
   // Straight directions first (the diagonal entries read them), then the diagonals.
@@ -43,6 +46,13 @@ void build_jump_tables(JpsMapData& m) {
         at(x, y, d) = v;
       }
     }
+  }
+  m.table16.clear();
+  m.table32.clear();
+  if (std::max(w, h) < 32768) {  // every entry's magnitude is below the longer side
+    m.table16.assign(table.begin(), table.end());
+  } else {
+    m.table32 = std::move(table);
   }
 }
 

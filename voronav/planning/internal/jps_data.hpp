@@ -1,12 +1,12 @@
 // Per-map data of the JPS planners (jps.hpp): the bit-packed map and its transpose, and for JPS+
-// the jump-point tables. Internal; built by JpsPlanner::prepare().
+// the jump-point tables; and the per-planner search state reused between queries. Internal; built
+// by JpsPlanner::prepare().
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "voronav/planning/internal/bit_grid.hpp"
-#include "voronav/planning/internal/indexed_heap.hpp"
 
 namespace voronav::planning::internal {
 
@@ -24,9 +24,12 @@ struct JpsMapData {
   int width = 0, height = 0;
   BitGrid rows;  ///< row-major bits (free(row = y, col = x))
   BitGrid cols;  ///< transposed (free(row = x, col = y))
-  /// JPS+ only: table[8 * (y * width + x) + d] > 0: a jump point that many steps away in
-  /// direction d; <= 0: no jump point, -table free steps before the wall (or the map edge).
-  std::vector<std::int32_t> table;
+  /// JPS+ only: entry 8 * (y * width + x) + d > 0: a jump point that many steps away in
+  /// direction d; <= 0: no jump point, -entry free steps before the wall (or the map edge).
+  /// 16-bit entries (16 bytes per cell, one cache line holds 4 cells) when both sides of the map
+  /// are below 32768 cells, else 32-bit; exactly one of the two is filled.
+  std::vector<std::int16_t> table16;
+  std::vector<std::int32_t> table32;
 
   [[nodiscard]] bool free(int x, int y) const { return rows.free(y, x); }
 };
@@ -34,12 +37,31 @@ struct JpsMapData {
 /// Builds the JPS+ tables of `m` (m.rows must be built).
 void build_jump_tables(JpsMapData& m);
 
+/// Search state of one node (one cell), 16 bytes so one cache line holds four: reset lazily by a
+/// search stamp instead of clearing arrays per query.
+struct JpsNode {
+  std::uint32_t stamp;  ///< == search id: generated (open); == search id + 1: closed
+  std::int32_t parent;  ///< cell index of the parent jump point, -1 for the start
+  std::int32_t gs, gd;  ///< g as exact (straight, diagonal) step counts
+};
+
+/// Open list entry (16 bytes), a 128-bit key (hi, lo) ordered like (f, larger g first, node):
+/// hi = the bits of f (exact, double); lo = inverted bits of g as a float (g only breaks f ties)
+/// above the node index.
+struct JpsOpenItem {
+  std::uint64_t lo, hi;
+};
+
+/// A successor found while expanding one node: cell, and the steps from that node.
+struct JpsSuccessor {
+  std::int32_t node, x, y, ds, dd;
+};
+
 struct JpsSearchState {
-  std::vector<std::int32_t> gs, gd, parent, heap_pos;
-  std::vector<std::uint32_t> stamp;
-  std::vector<std::uint8_t> closed;
-  std::uint32_t search_id = 0;
-  IndexedMinHeap open;
+  std::vector<JpsNode> nodes;
+  std::vector<JpsSuccessor> successors;
+  std::vector<JpsOpenItem> open;
+  std::uint32_t search_id = 0;  ///< even; advanced by 2 per query
 };
 
 }  // namespace voronav::planning::internal
