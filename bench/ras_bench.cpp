@@ -158,6 +158,9 @@ struct Row {
   long regions = 0;              // RAS: numbered regions; A*/Dijkstra: expanded; BFS: reached
   long path_regions = 0;         // 0 = no path
   std::string failure = "none";  // shown instead of the path regions when there is no path
+  /// Baselines with density > 0: "precomputed" (the density-filtered grid built before timing)
+  /// or "online" (the filtering timed with the search, as RAS tests density while it numbers).
+  std::string filter = "-";
 };
 
 struct Query {
@@ -190,23 +193,46 @@ std::vector<Row> run_config(const RegionGrid& rg, const Query& q, int D, bool wi
       len = st == RasStatus::kOk ? search.field().path_to(search.field().id_at(gr)).size() : 0;
       benchmark::DoNotOptimize(len);
     });
-    rows.push_back({"RAS", r, dir == RasDirection::kOptimal ? "optimal" : "default", D, ms,
-                    search.field().size(), static_cast<long>(len), std::string(to_string(st))});
+    const char* name = dir == RasDirection::kOptimal             ? "optimal"
+                       : dir == RasDirection::kOptimalPerRegion ? "optimal per region"
+                                                                : "default";
+    rows.push_back({"RAS", r, name, D, ms, search.field().size(), static_cast<long>(len),
+                    std::string(to_string(st))});
   }
   const BinaryGrid graph = density_filtered(rg.blocked(), D, sr);
-  {
-    RegionBfs bfs;
-    std::size_t len = 0, reached = 0;
-    const double ms = median_ms([&] { len = bfs.run(graph, sr, gr, true, reached); });
-    rows.push_back({"BFS", r, "-", D, ms, static_cast<long>(reached), static_cast<long>(len)});
-  }
-  if (with_others) {
-    for (const bool astar : {true, false}) {
-      AStarPlanner p({}, astar);
-      PlanResult res;
-      const double ms = median_ms([&] { res = p.plan(graph, sr, gr); });
-      rows.push_back({astar ? "A*" : "Dijkstra", r, "-", D, ms, static_cast<long>(res.expanded),
-                      res.ok() ? static_cast<long>(res.path.size()) : 0});
+  // With density, each baseline twice: on the grid filtered beforehand ("precomputed", the
+  // filtering not timed) and with the filtering inside the timed call ("online").
+  for (const bool online : D > 0 ? std::vector<bool>{false, true} : std::vector<bool>{false}) {
+    const std::string filter = D == 0 ? "-" : (online ? "online" : "precomputed");
+    {
+      RegionBfs bfs;
+      std::size_t len = 0, reached = 0;
+      const double ms = median_ms([&] {
+        if (online) {
+          const BinaryGrid g = density_filtered(rg.blocked(), D, sr);
+          len = bfs.run(g, sr, gr, true, reached);
+        } else {
+          len = bfs.run(graph, sr, gr, true, reached);
+        }
+      });
+      rows.push_back(
+          {"BFS", r, "-", D, ms, static_cast<long>(reached), static_cast<long>(len), "none", filter});
+    }
+    if (with_others) {
+      for (const bool astar : {true, false}) {
+        AStarPlanner p({}, astar);
+        PlanResult res;
+        const double ms = median_ms([&] {
+          if (online) {
+            const BinaryGrid g = density_filtered(rg.blocked(), D, sr);
+            res = p.plan(g, sr, gr);
+          } else {
+            res = p.plan(graph, sr, gr);
+          }
+        });
+        rows.push_back({astar ? "A*" : "Dijkstra", r, "-", D, ms, static_cast<long>(res.expanded),
+                        res.ok() ? static_cast<long>(res.path.size()) : 0, "none", filter});
+      }
     }
   }
   return rows;
@@ -214,22 +240,29 @@ std::vector<Row> run_config(const RegionGrid& rg, const Query& q, int D, bool wi
 
 void print_rows(const std::vector<Row>& rows, bool numbered) {
   std::cout << "| " << (numbered ? "# | " : "")
-            << "algorithm | region size | direction | density | time (ms) | x BFS | regions | "
-               "path regions |\n|"
-            << (numbered ? "---|" : "") << "---|---|---|---|---|---|---|---|\n";
-  // BFS row of the same (region size, density) for the ratio.
+            << "algorithm | region size | direction | density | density filter | time (ms) | "
+               "x BFS | x BFS online | regions | path regions |\n|"
+            << (numbered ? "---|" : "") << "---|---|---|---|---|---|---|---|---|---|\n";
+  // BFS rows of the same (region size, density) for the ratios: the precomputed-filter BFS (the
+  // only one at density 0) and, at density > 0, the BFS that filters online.
   int n = 0;
   for (const Row& row : rows) {
-    double bfs_ms = 0.0;
+    double bfs_ms = 0.0, bfs_online_ms = 0.0;
     for (const Row& b : rows)
-      if (b.algorithm == "BFS" && b.region_size == row.region_size && b.density == row.density)
-        bfs_ms = b.ms;
+      if (b.algorithm == "BFS" && b.region_size == row.region_size && b.density == row.density) {
+        if (b.filter == "online")
+          bfs_online_ms = b.ms;
+        else
+          bfs_ms = b.ms;
+      }
     std::cout << "| ";
     if (numbered) std::cout << (row.algorithm == "RAS" ? std::to_string(++n) : "") << " | ";
     std::cout << row.algorithm << " | " << row.region_size << " | " << row.direction << " | "
               << (row.algorithm == "RAS" || row.density > 0 ? std::to_string(row.density) : "0")
+              << " | " << (row.algorithm == "RAS" && row.density > 0 ? "online" : row.filter)
               << " | " << fmt("%.3f", row.ms) << " | " << fmt("%.2f", row.ms / bfs_ms) << " | "
-              << row.regions << " | "
+              << (bfs_online_ms > 0.0 ? fmt("%.2f", row.ms / bfs_online_ms) : std::string("-"))
+              << " | " << row.regions << " | "
               << (row.path_regions > 0 ? std::to_string(row.path_regions) : row.failure) << " |\n";
   }
 }
@@ -328,7 +361,9 @@ void table4_on(const BinaryGrid& grid, const Query& q) {
   for (const int r : {2, 8}) {
     const RegionGrid rg(grid, {.region_size = r});
     for (const int D : {0, 8}) {
-      auto part = run_config(rg, q, D, true, {RasDirection::kDefault, RasDirection::kOptimal});
+      auto part = run_config(rg, q, D, true,
+                             {RasDirection::kDefault, RasDirection::kOptimal,
+                              RasDirection::kOptimalPerRegion});
       rows.insert(rows.end(), part.begin(), part.end());
     }
   }

@@ -136,7 +136,8 @@ void bind_planning(py::module_& m) {
                                    {"majority_blocked", planning::RegionRule::kMajorityBlocked}});
   bind_enum<planning::RasDirection>(pl, "RasDirection",
                                     {{"default", planning::RasDirection::kDefault},
-                                     {"optimal", planning::RasDirection::kOptimal}});
+                                     {"optimal", planning::RasDirection::kOptimal},
+                                     {"optimal_per_region", planning::RasDirection::kOptimalPerRegion}});
   bind_enum<planning::RasExtent>(pl, "RasExtent",
                                  {{"until_goal", planning::RasExtent::kUntilGoal},
                                   {"whole_map", planning::RasExtent::kWholeMap}});

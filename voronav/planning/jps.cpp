@@ -88,10 +88,9 @@ struct TableJumps {
                         static_cast<std::size_t>(x));
   }
 
-  /// Straight jump from the entry of (x, y) in direction d = (dx, dy), cut short at the goal
-  /// when it lies on the way.
-  [[nodiscard]] static Jump straight_from(const T* e, int x, int y, int dx, int dy, Cell goal) {
-    const int t = e[internal::dir_index(dx, dy)];
+  /// Straight jump from (x, y) along (dx, dy) with table entry t, cut short at the goal when it
+  /// lies on the way.
+  [[nodiscard]] static Jump straight_from(int t, int x, int y, int dx, int dy, Cell goal) {
     int to_goal = 0;
     if (dy == 0) {
       if (goal.y == y) to_goal = (goal.x - x) * dx;
@@ -105,7 +104,7 @@ struct TableJumps {
   }
 
   [[nodiscard]] Jump straight(int x, int y, int dx, int dy, Cell goal) const {
-    return straight_from(at(x, y), x, y, dx, dy, goal);
+    return straight_from(at(x, y)[internal::dir_index(dx, dy)], x, y, dx, dy, goal);
   }
 
   /// Diagonal walk by table hops: to the next cell with a straight jump point, or to the cell
@@ -114,12 +113,14 @@ struct TableJumps {
   template <class Emit>
   void diagonal(int x, int y, int dx, int dy, Cell goal, Emit&& emit) const {
     const int d = internal::dir_index(dx, dy);
+    const int dh = internal::dir_index(dx, 0), dv = internal::dir_index(0, dy);
+    const int gx = (goal.x - x) * dx, gy = (goal.y - y) * dy;
+    const int target = gx > 0 && gy > 0 ? std::min(gx, gy) : 0;  // steps to the crossing
     for (int k = 0;;) {
       const int t = at(x, y)[d];
-      const int gx = (goal.x - x) * dx, gy = (goal.y - y) * dy;
-      const int to_target = gx > 0 && gy > 0 ? std::min(gx, gy) : 0;
+      const int to_target = target - k;
       int step;
-      if (to_target > 0 && to_target <= (t > 0 ? t : -t) && (t <= 0 || to_target <= t))
+      if (to_target > 0 && to_target <= (t > 0 ? t : -t))
         step = to_target;
       else if (t > 0)
         step = t;
@@ -133,9 +134,9 @@ struct TableJumps {
         return;
       }
       const T* e = at(x, y);
-      const Jump h = straight_from(e, x, y, dx, 0, goal);
+      const Jump h = straight_from(e[dh], x, y, dx, 0, goal);
       if (h.steps != 0) emit(h.x, h.y, h.steps, k);
-      const Jump v = straight_from(e, x, y, 0, dy, goal);
+      const Jump v = straight_from(e[dv], x, y, 0, dy, goal);
       if (v.steps != 0) emit(v.x, v.y, v.steps, k);
     }
   }
@@ -151,7 +152,8 @@ class OpenList {
   [[nodiscard]] bool empty() const { return a_.empty(); }
   static JpsOpenItem item(double f, float g, std::int32_t node) {
     const std::uint64_t g_desc = ~std::uint64_t{std::bit_cast<std::uint32_t>(g)} << 32;
-    return {g_desc | static_cast<std::uint32_t>(node), std::bit_cast<std::uint64_t>(f)};
+    return (JpsOpenItem{std::bit_cast<std::uint64_t>(f)} << 64) | g_desc |
+           static_cast<std::uint32_t>(node);
   }
   void push(const JpsOpenItem& it) {
     std::size_t i = a_.size();
@@ -167,7 +169,7 @@ class OpenList {
   }
   std::int32_t pop() {
     JpsOpenItem* a = a_.data();
-    const auto top = static_cast<std::int32_t>(static_cast<std::uint32_t>(a[0].lo));
+    const auto top = static_cast<std::int32_t>(static_cast<std::uint32_t>(a[0]));
     const JpsOpenItem last = a_.back();
     a_.pop_back();
     const std::size_t n = a_.size();
@@ -194,9 +196,7 @@ class OpenList {
   }
 
  private:
-  static bool before(const JpsOpenItem& a, const JpsOpenItem& b) {
-    return (a.hi < b.hi) | ((a.hi == b.hi) & (a.lo < b.lo));
-  }
+  static bool before(JpsOpenItem a, JpsOpenItem b) { return a < b; }
   std::vector<JpsOpenItem>& a_;
 };
 
@@ -314,7 +314,8 @@ PlanStatus search(const Jumps& jumps, const JpsMapData& m, internal::JpsSearchSt
 
   // Jump points from goal to start; each segment is diagonal, then straight: fill in its cells.
   const JpsNode& gn = nodes[goal_i];
-  std::vector<std::int32_t> chain;
+  std::vector<std::int32_t>& chain = st.chain;
+  chain.clear();
   for (std::int32_t i = goal_i; i != -1; i = nodes[i].parent)
     chain.push_back(i);
   result.path.reserve(static_cast<std::size_t>(gn.gs + gn.gd) + 1);

@@ -45,12 +45,10 @@ struct JpsNode {
   std::int32_t gs, gd;  ///< g as exact (straight, diagonal) step counts
 };
 
-/// Open list entry (16 bytes), a 128-bit key (hi, lo) ordered like (f, larger g first, node):
-/// hi = the bits of f (exact, double); lo = inverted bits of g as a float (g only breaks f ties)
-/// above the node index.
-struct JpsOpenItem {
-  std::uint64_t lo, hi;
-};
+/// Open list entry: a 128-bit key ordered like (f, larger g first, node): bits 64-127 = the bits
+/// of f (exact, double; f >= 0 so its bits order like its value), bits 32-63 = inverted bits of g
+/// as a float (g only breaks f ties), bits 0-31 = the node index.
+__extension__ using JpsOpenItem = unsigned __int128;
 
 /// A successor found while expanding one node: cell, and the steps from that node.
 struct JpsSuccessor {
@@ -60,6 +58,7 @@ struct JpsSuccessor {
 struct JpsSearchState {
   std::vector<JpsNode> nodes;
   std::vector<JpsSuccessor> successors;
+  std::vector<std::int32_t> chain;  ///< jump points from the goal back to the start
   std::vector<JpsOpenItem> open;
   std::uint32_t search_id = 0;  ///< even; advanced by 2 per query
 };
