@@ -79,16 +79,15 @@ struct OnlineJumps {
   }
 };
 
-/// JPS+ jumps by table look-up (T: the table's entry type).
-template <class T>
+/// JPS+ jumps by table look-up.
 struct TableJumps {
   const JpsMapData& m;
-  const T* table;
+  const std::int8_t* table;
 
   /// Loads the table entries of a cell about to be expanded.
   void prefetch(std::int32_t cell) const { __builtin_prefetch(table + 8 * cell); }
 
-  [[nodiscard]] const T* at(int x, int y) const {
+  [[nodiscard]] const std::int8_t* at(int x, int y) const {
     return table + 8 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(m.width) +
                         static_cast<std::size_t>(x));
   }
@@ -108,8 +107,21 @@ struct TableJumps {
     return {};
   }
 
+  /// The full entry of (x, y) in direction d = (dx, dy), following kFarJump entries.
+  [[nodiscard]] int entry(int t, int x, int y, int d, int dx, int dy) const {
+    if (t != internal::kFarJump) [[likely]]
+      return t;
+    int base = 0;
+    do {
+      base += internal::kFarSteps;
+      t = at(x + dx * base, y + dy * base)[d];
+    } while (t == internal::kFarJump);
+    return t > 0 ? t + base : t - base;
+  }
+
   [[nodiscard]] Jump straight(int x, int y, int dx, int dy, Cell goal) const {
-    return straight_from(at(x, y)[internal::dir_index(dx, dy)], x, y, dx, dy, goal);
+    const int d = internal::dir_index(dx, dy);
+    return straight_from(entry(at(x, y)[d], x, y, d, dx, dy), x, y, dx, dy, goal);
   }
 
   /// Diagonal walk by table hops: to the next cell with a straight jump point, or to the cell
@@ -122,7 +134,7 @@ struct TableJumps {
     const int gx = (goal.x - x) * dx, gy = (goal.y - y) * dy;
     const int target = gx > 0 && gy > 0 ? std::min(gx, gy) : 0;  // steps to the crossing
     for (int k = 0;;) {
-      const int t = at(x, y)[d];
+      const int t = entry(at(x, y)[d], x, y, d, dx, dy);
       const int to_target = target - k;
       int step;
       if (to_target > 0 && to_target <= (t > 0 ? t : -t))
@@ -138,10 +150,10 @@ struct TableJumps {
         emit(x, y, 0, k);
         return;
       }
-      const T* e = at(x, y);
-      const Jump h = straight_from(e[dh], x, y, dx, 0, goal);
+      const std::int8_t* e = at(x, y);
+      const Jump h = straight_from(entry(e[dh], x, y, dh, dx, 0), x, y, dx, 0, goal);
       if (h.steps != 0) emit(h.x, h.y, h.steps, k);
-      const Jump v = straight_from(e[dv], x, y, 0, dy, goal);
+      const Jump v = straight_from(entry(e[dv], x, y, dv, 0, dy), x, y, 0, dy, goal);
       if (v.steps != 0) emit(v.x, v.y, v.steps, k);
     }
   }
@@ -426,12 +438,8 @@ PlanResult JpsPlanner::plan(const BinaryGrid& grid, Cell start, Cell goal) {
   auto& st = *state_;
   if (!tables_)
     result.status = search(OnlineJumps{m}, m, st, options_, start, goal, result);
-  else if (!m.table16.empty())
-    result.status =
-        search(TableJumps<std::int16_t>{m, m.table16.data()}, m, st, options_, start, goal, result);
   else
-    result.status =
-        search(TableJumps<std::int32_t>{m, m.table32.data()}, m, st, options_, start, goal, result);
+    result.status = search(TableJumps{m, m.table.data()}, m, st, options_, start, goal, result);
   result.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return result;

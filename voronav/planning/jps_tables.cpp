@@ -1,6 +1,5 @@
 // JPS+ jump-point tables (see jps.hpp): one sweep per direction, each cell's entry from its
-// neighbour's in that direction, so the build is O(8 cells); stored as 16-bit entries when the map
-// allows.
+// neighbour's in that direction, so the build is O(8 cells); stored as one byte per entry.
 #include <algorithm>
 
 #include "voronav/planning/internal/jps_data.hpp"
@@ -47,12 +46,12 @@ void build_jump_tables(JpsMapData& m) {
       }
     }
   }
-  m.table16.clear();
-  m.table32.clear();
-  if (std::max(w, h) < 32768) {  // every entry's magnitude is below the longer side
-    m.table16.assign(table.begin(), table.end());
-  } else {
-    m.table32 = std::move(table);
+  // Entries past +-127 become kFarJump: along a direction the entries change by one per step
+  // (the jump point, or the wall, comes one step nearer), so the entry 127 steps on carries on.
+  m.table.resize(table.size());
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const std::int32_t v = table[i];
+    m.table[i] = static_cast<std::int8_t>(v > kFarSteps || v < -kFarSteps ? kFarJump : v);
   }
 }
 
