@@ -271,14 +271,21 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
   }
   const bool until_goal = options.extent == RasExtent::kUntilGoal && goal_region.has_value();
   // The order of kDefault and kOptimal (chosen here, once, from the start->goal direction).
-  std::array<int, 8> fixed{};
+  // Per position i of the order: the neighbour's offset, and for a diagonal the offsets of its
+  // two flanking straight neighbours (0 for a straight step: no corner test).
+  std::array<std::ptrdiff_t, 8> step_off{}, flank_a{}, flank_b{};
   {
     const Order* o = &default_order;
     if (options.direction == RasDirection::kOptimal && goal_region && *goal_region != start_region)
       o = &goal_orders[goal_order_index(goal_region->x - start_region.x,
                                         goal_region->y - start_region.y, eight)];
-    for (std::size_t i = 0; i < 8; ++i)
-      fixed[i] = (*o)[i];
+    for (std::size_t i = 0; i < 8; ++i) {
+      const int k = (*o)[i];
+      step_off[i] = off[static_cast<std::size_t>(k)];
+      const bool corner = no_cut && (k & 1) != 0;
+      flank_a[i] = corner ? off[static_cast<std::size_t>(k - 1)] : 0;
+      flank_b[i] = corner ? off[static_cast<std::size_t>((k + 1) & 7)] : 0;
+    }
   }
   const std::ptrdiff_t goal_p =
       goal_region ? static_cast<std::ptrdiff_t>(f.padded(*goal_region)) : -1;
@@ -328,12 +335,11 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
       // per neighbour follow the regular pattern of the wave front and predict well (as in a
       // plain BFS).
       for (int i = 0; i < ndirs; ++i) {
-        const int k = fixed[i];
-        const std::ptrdiff_t q = p + off[static_cast<std::size_t>(k)];
+        const auto ui = static_cast<std::size_t>(i);
+        const std::ptrdiff_t q = p + step_off[ui];
         if (label[q] != RasField::kUnnumbered) continue;
-        if (no_cut && (k & 1) != 0 &&
-            (label[p + off[static_cast<std::size_t>(k - 1)]] == RasField::kObstacle ||
-             label[p + off[static_cast<std::size_t>((k + 1) & 7)]] == RasField::kObstacle))
+        if (flank_a[ui] != 0 && (label[p + flank_a[ui]] == RasField::kObstacle ||
+                                 label[p + flank_b[ui]] == RasField::kObstacle))
           continue;
         if (D > 0 && density(q) < D) {
           label[q] = RasField::kBelowDensity;
