@@ -61,9 +61,10 @@ void add_ras_json(nlohmann::json& out, const planning::RasPlanner& ras, const Ma
   out["ras_status"] = planning::to_string(r.status);
   out["region_size"] = o.region_size;
   out["density"] = o.density;
-  out["direction"] = o.direction == planning::RasDirection::kOptimal             ? "optimal"
-                     : o.direction == planning::RasDirection::kOptimalPerRegion ? "optimal-per-region"
-                                                                                : "default";
+  out["direction"] = o.direction == planning::RasDirection::kOptimal ? "optimal"
+                     : o.direction == planning::RasDirection::kOptimalPerRegion
+                         ? "optimal-per-region"
+                         : "default";
   out["region_grid"] = {rg.width(), rg.height()};
   out["regions"] = r.regions;
   out["steps"] = f.steps();
