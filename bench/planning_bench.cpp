@@ -1,7 +1,8 @@
 // Planner benchmark on the Moving AI maps: mean time per scenario query for A*, Dijkstra, JPS,
 // JPS+ (tables built before timing; the build time is its own counter) and a plain BFS flood of
 // the whole map from the same start (the memory-bound floor of any search that touches the whole
-// map), all measured in the same run. bench/run_planning_bench.sh turns the JSON output into
+// map), all measured in the same run; A*, JPS and JPS+ in alternating rounds
+// ($VORONAV_BENCH_ROUNDS, default 3). bench/run_planning_bench.sh turns the JSON output into
 // bench/results/planning.md with the JPS speed-ups over A* and the A*/BFS ratio per map.
 //
 // Maps are read from $VORONAV_MOVINGAI_DIR, else ../shared/data/movingai beside the repo, else
@@ -105,19 +106,26 @@ int main(int argc, char** argv) {
     std::cerr << "planning_bench: no .map with .map.scen found in " << data_dir() << "\n";
     return 2;
   }
+  // A*, JPS and JPS+ run in `rounds` alternating rounds over all maps (run_planning_bench.sh
+  // keeps each one's fastest round), so a load change on the machine hits all three alike.
+  int rounds = 3;
+  if (const char* env = std::getenv("VORONAV_BENCH_ROUNDS")) rounds = std::max(1, std::atoi(env));
+  for (int round = 0; round < rounds; ++round)
+    for (const auto& c : cases) {
+      benchmark::RegisterBenchmark(("astar/" + c->name).c_str(), [c](benchmark::State& s) {
+        planning::AStarPlanner p;
+        run_planner(s, *c, p);
+      })->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(("jps/" + c->name).c_str(), [c](benchmark::State& s) {
+        planning::JpsPlanner p;
+        run_planner(s, *c, p);
+      })->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(("jps+/" + c->name).c_str(), [c](benchmark::State& s) {
+        planning::JpsPlusPlanner p;
+        run_planner(s, *c, p);
+      })->Unit(benchmark::kMillisecond);
+    }
   for (const auto& c : cases) {
-    benchmark::RegisterBenchmark(("astar/" + c->name).c_str(), [c](benchmark::State& s) {
-      planning::AStarPlanner p;
-      run_planner(s, *c, p);
-    })->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("jps/" + c->name).c_str(), [c](benchmark::State& s) {
-      planning::JpsPlanner p;
-      run_planner(s, *c, p);
-    })->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("jps+/" + c->name).c_str(), [c](benchmark::State& s) {
-      planning::JpsPlusPlanner p;
-      run_planner(s, *c, p);
-    })->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("dijkstra/" + c->name).c_str(), [c](benchmark::State& s) {
       planning::DijkstraPlanner p;
       run_planner(s, *c, p);

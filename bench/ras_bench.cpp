@@ -15,7 +15,11 @@
 // also gives its ratio to the plain BFS over the same region grid (a FIFO queue with parent
 // pointers, stopping at the goal, same neighbour rule). RAS time = the numbering plus the
 // count-rule path extraction; A*/Dijkstra/BFS times include their path reconstruction. Region-grid
-// construction is reported separately (all share it).
+// construction is reported separately (all share it). The RAS rows of one configuration (default,
+// optimal, optimal per region) and its BFS baselines are timed interleaved, one run of each in
+// turn. With density > 0 the baselines run twice: on the grid density-filtered beforehand
+// ("precomputed", filtering not timed) and with the filtering inside the timed call ("online", as
+// RAS tests density while it numbers).
 //
 // Real maps come from $VORONAV_DATA_DIR, else ../shared/data beside the repository, else data/.
 #include <benchmark/benchmark.h>
@@ -131,6 +135,30 @@ double median_ms(const std::function<void()>& fn, double min_total_s = 0.15) {
   return t[t.size() / 2];
 }
 
+// Medians like median_ms for several functions run in turn (one run of each per round), so a
+// change of the machine's load hits them alike: their ratios are what these rows compare.
+std::vector<double> interleaved_median_ms(const std::vector<std::function<void()>>& fns,
+                                          double min_total_s = 0.15) {
+  std::vector<std::vector<double>> t(fns.size());
+  double total = 0.0;
+  while (t[0].size() < 7 ||
+         (total < min_total_s * static_cast<double>(fns.size()) && t[0].size() < 2000)) {
+    for (std::size_t i = 0; i < fns.size(); ++i) {
+      const double t0 = cpu_s();
+      fns[i]();
+      const double s = cpu_s() - t0;
+      t[i].push_back(s * 1e3);
+      total += s;
+    }
+  }
+  std::vector<double> out;
+  for (auto& v : t) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    out.push_back(v[v.size() / 2]);
+  }
+  return out;
+}
+
 // Regions whose density is below D become blocked (the start region excepted): the graph RAS
 // with density D searches, for A* and Dijkstra.
 BinaryGrid density_filtered(const BinaryGrid& blocked, int D, Cell start) {
@@ -158,6 +186,9 @@ struct Row {
   long regions = 0;              // RAS: numbered regions; A*/Dijkstra: expanded; BFS: reached
   long path_regions = 0;         // 0 = no path
   std::string failure = "none";  // shown instead of the path regions when there is no path
+  /// Baselines with density > 0: "precomputed" (the density-filtered grid built before timing)
+  /// or "online" (the filtering timed with the search, as RAS tests density while it numbers).
+  std::string filter = "-";
 };
 
 struct Query {
@@ -177,36 +208,69 @@ std::vector<Row> run_config(const RegionGrid& rg, const Query& q, int D, bool wi
   std::vector<Row> rows;
   const Cell sr = rg.region_of(q.start), gr = rg.region_of(q.goal);
   const int r = rg.region_size();
-  for (const RasDirection dir : dirs) {
-    RasOptions o{.region_size = r,
-                 .density = D,
-                 .direction = dir,
-                 .corner_rule = RasCornerRule::kNoCornerCutting};
-    RasSearch search;
-    RasStatus st = RasStatus::kUnreachable;
-    std::size_t len = 0;
-    const double ms = median_ms([&] {
-      st = search.run(rg, sr, gr, o);
-      len = st == RasStatus::kOk ? search.field().path_to(search.field().id_at(gr)).size() : 0;
-      benchmark::DoNotOptimize(len);
-    });
-    rows.push_back({"RAS", r, dir == RasDirection::kOptimal ? "optimal" : "default", D, ms,
-                    search.field().size(), static_cast<long>(len), std::string(to_string(st))});
-  }
   const BinaryGrid graph = density_filtered(rg.blocked(), D, sr);
-  {
-    RegionBfs bfs;
-    std::size_t len = 0, reached = 0;
-    const double ms = median_ms([&] { len = bfs.run(graph, sr, gr, true, reached); });
-    rows.push_back({"BFS", r, "-", D, ms, static_cast<long>(reached), static_cast<long>(len)});
+  // The RAS directions and the BFS baselines are timed interleaved (their cost ratios are the
+  // point of Table 4's rows). With density, each baseline runs twice: on the grid filtered
+  // beforehand ("precomputed", the filtering not timed) and with the filtering inside the timed
+  // call ("online").
+  const std::size_t nd = dirs.size();
+  std::vector<RasSearch> searches(nd);
+  std::vector<RasStatus> st(nd, RasStatus::kUnreachable);
+  std::vector<std::size_t> lens(nd, 0);
+  std::vector<std::function<void()>> runs;
+  for (std::size_t i = 0; i < nd; ++i)
+    runs.push_back([&, i] {
+      const RasOptions o{.region_size = r,
+                         .density = D,
+                         .direction = dirs[i],
+                         .corner_rule = RasCornerRule::kNoCornerCutting};
+      st[i] = searches[i].run(rg, sr, gr, o);
+      const RasField& f = searches[i].field();
+      lens[i] = st[i] == RasStatus::kOk ? f.path_to(f.id_at(gr)).size() : 0;
+      benchmark::DoNotOptimize(lens[i]);
+    });
+  const std::vector<bool> filters =
+      D > 0 ? std::vector<bool>{false, true} : std::vector<bool>{false};
+  std::vector<RegionBfs> bfs(filters.size());
+  std::vector<std::size_t> bfs_len(filters.size(), 0), bfs_reached(filters.size(), 0);
+  for (std::size_t i = 0; i < filters.size(); ++i)
+    runs.push_back([&, i] {
+      if (filters[i]) {
+        const BinaryGrid g = density_filtered(rg.blocked(), D, sr);
+        bfs_len[i] = bfs[i].run(g, sr, gr, true, bfs_reached[i]);
+      } else {
+        bfs_len[i] = bfs[i].run(graph, sr, gr, true, bfs_reached[i]);
+      }
+    });
+  const std::vector<double> ms = interleaved_median_ms(runs);
+  for (std::size_t i = 0; i < nd; ++i) {
+    const RasDirection dir = dirs[i];
+    const char* name = dir == RasDirection::kOptimal            ? "optimal"
+                       : dir == RasDirection::kOptimalPerRegion ? "optimal per region"
+                                                                : "default";
+    rows.push_back({"RAS", r, name, D, ms[i], searches[i].field().size(),
+                    static_cast<long>(lens[i]), std::string(to_string(st[i]))});
   }
-  if (with_others) {
-    for (const bool astar : {true, false}) {
-      AStarPlanner p({}, astar);
-      PlanResult res;
-      const double ms = median_ms([&] { res = p.plan(graph, sr, gr); });
-      rows.push_back({astar ? "A*" : "Dijkstra", r, "-", D, ms, static_cast<long>(res.expanded),
-                      res.ok() ? static_cast<long>(res.path.size()) : 0});
+  for (const bool online : filters) {
+    const std::string filter = D == 0 ? "-" : (online ? "online" : "precomputed");
+    const std::size_t i = online ? 1 : 0;
+    rows.push_back({"BFS", r, "-", D, ms[nd + i], static_cast<long>(bfs_reached[i]),
+                    static_cast<long>(bfs_len[i]), "none", filter});
+    if (with_others) {
+      for (const bool astar : {true, false}) {
+        AStarPlanner p({}, astar);
+        PlanResult res;
+        const double t_ms = median_ms([&] {
+          if (online) {
+            const BinaryGrid g = density_filtered(rg.blocked(), D, sr);
+            res = p.plan(g, sr, gr);
+          } else {
+            res = p.plan(graph, sr, gr);
+          }
+        });
+        rows.push_back({astar ? "A*" : "Dijkstra", r, "-", D, t_ms, static_cast<long>(res.expanded),
+                        res.ok() ? static_cast<long>(res.path.size()) : 0, "none", filter});
+      }
     }
   }
   return rows;
@@ -214,22 +278,29 @@ std::vector<Row> run_config(const RegionGrid& rg, const Query& q, int D, bool wi
 
 void print_rows(const std::vector<Row>& rows, bool numbered) {
   std::cout << "| " << (numbered ? "# | " : "")
-            << "algorithm | region size | direction | density | time (ms) | x BFS | regions | "
-               "path regions |\n|"
-            << (numbered ? "---|" : "") << "---|---|---|---|---|---|---|---|\n";
-  // BFS row of the same (region size, density) for the ratio.
+            << "algorithm | region size | direction | density | density filter | time (ms) | "
+               "x BFS | x BFS online | regions | path regions |\n|"
+            << (numbered ? "---|" : "") << "---|---|---|---|---|---|---|---|---|---|\n";
+  // BFS rows of the same (region size, density) for the ratios: the precomputed-filter BFS (the
+  // only one at density 0) and, at density > 0, the BFS that filters online.
   int n = 0;
   for (const Row& row : rows) {
-    double bfs_ms = 0.0;
+    double bfs_ms = 0.0, bfs_online_ms = 0.0;
     for (const Row& b : rows)
-      if (b.algorithm == "BFS" && b.region_size == row.region_size && b.density == row.density)
-        bfs_ms = b.ms;
+      if (b.algorithm == "BFS" && b.region_size == row.region_size && b.density == row.density) {
+        if (b.filter == "online")
+          bfs_online_ms = b.ms;
+        else
+          bfs_ms = b.ms;
+      }
     std::cout << "| ";
     if (numbered) std::cout << (row.algorithm == "RAS" ? std::to_string(++n) : "") << " | ";
     std::cout << row.algorithm << " | " << row.region_size << " | " << row.direction << " | "
               << (row.algorithm == "RAS" || row.density > 0 ? std::to_string(row.density) : "0")
+              << " | " << (row.algorithm == "RAS" && row.density > 0 ? "online" : row.filter)
               << " | " << fmt("%.3f", row.ms) << " | " << fmt("%.2f", row.ms / bfs_ms) << " | "
-              << row.regions << " | "
+              << (bfs_online_ms > 0.0 ? fmt("%.2f", row.ms / bfs_online_ms) : std::string("-"))
+              << " | " << row.regions << " | "
               << (row.path_regions > 0 ? std::to_string(row.path_regions) : row.failure) << " |\n";
   }
 }
@@ -328,7 +399,9 @@ void table4_on(const BinaryGrid& grid, const Query& q) {
   for (const int r : {2, 8}) {
     const RegionGrid rg(grid, {.region_size = r});
     for (const int D : {0, 8}) {
-      auto part = run_config(rg, q, D, true, {RasDirection::kDefault, RasDirection::kOptimal});
+      auto part = run_config(
+          rg, q, D, true,
+          {RasDirection::kDefault, RasDirection::kOptimal, RasDirection::kOptimalPerRegion});
       rows.insert(rows.end(), part.begin(), part.end());
     }
   }

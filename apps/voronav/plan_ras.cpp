@@ -23,9 +23,10 @@ void add_ras_options(CLI::App* cmd, RasCliArgs& args) {
       ->check(CLI::Range(0, 8))
       ->capture_default_str();
   cmd->add_option("--direction", args.direction,
-                  "RAS: neighbour order, default (counter-clockwise from east) or optimal "
-                  "(toward the goal first)")
-      ->check(CLI::IsMember({"default", "optimal"}))
+                  "RAS: neighbour order, default (counter-clockwise from east), optimal "
+                  "(toward the goal first, one order from the start->goal direction) or "
+                  "optimal-per-region (re-sorted toward the goal at every region)")
+      ->check(CLI::IsMember({"default", "optimal", "optimal-per-region"}))
       ->capture_default_str();
   cmd->add_flag("!--no-corner-cutting", args.corner_cutting,
                 "RAS: diagonal steps need both flanking regions free (as A*); the paper allows "
@@ -38,10 +39,13 @@ planning::RasOptions to_ras_options(const RasCliArgs& args) {
   o.density = args.density;
   if (args.direction == "optimal") {
     o.direction = planning::RasDirection::kOptimal;
+  } else if (args.direction == "optimal-per-region") {
+    o.direction = planning::RasDirection::kOptimalPerRegion;
   } else if (args.direction == "default") {
     o.direction = planning::RasDirection::kDefault;
   } else {
-    throw Error("--direction", 0, "expected default or optimal, got '" + args.direction + "'");
+    throw Error("--direction", 0,
+                "expected default, optimal or optimal-per-region, got '" + args.direction + "'");
   }
   o.corner_rule = args.corner_cutting ? planning::RasCornerRule::kAllowCornerCutting
                                       : planning::RasCornerRule::kNoCornerCutting;
@@ -57,7 +61,10 @@ void add_ras_json(nlohmann::json& out, const planning::RasPlanner& ras, const Ma
   out["ras_status"] = planning::to_string(r.status);
   out["region_size"] = o.region_size;
   out["density"] = o.density;
-  out["direction"] = o.direction == planning::RasDirection::kOptimal ? "optimal" : "default";
+  out["direction"] = o.direction == planning::RasDirection::kOptimal ? "optimal"
+                     : o.direction == planning::RasDirection::kOptimalPerRegion
+                         ? "optimal-per-region"
+                         : "default";
   out["region_grid"] = {rg.width(), rg.height()};
   out["regions"] = r.regions;
   out["steps"] = f.steps();

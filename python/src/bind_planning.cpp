@@ -134,9 +134,11 @@ void bind_planning(py::module_& m) {
   bind_enum<planning::RegionRule>(pl, "RegionRule",
                                   {{"any_blocked", planning::RegionRule::kAnyBlocked},
                                    {"majority_blocked", planning::RegionRule::kMajorityBlocked}});
-  bind_enum<planning::RasDirection>(pl, "RasDirection",
-                                    {{"default", planning::RasDirection::kDefault},
-                                     {"optimal", planning::RasDirection::kOptimal}});
+  bind_enum<planning::RasDirection>(
+      pl, "RasDirection",
+      {{"default", planning::RasDirection::kDefault},
+       {"optimal", planning::RasDirection::kOptimal},
+       {"optimal_per_region", planning::RasDirection::kOptimalPerRegion}});
   bind_enum<planning::RasExtent>(pl, "RasExtent",
                                  {{"until_goal", planning::RasExtent::kUntilGoal},
                                   {"whole_map", planning::RasExtent::kWholeMap}});

@@ -1,16 +1,18 @@
 // JPS+ jump-point tables (see jps.hpp): one sweep per direction, each cell's entry from its
-// neighbour's in that direction, so the build is O(8 cells).
+// neighbour's in that direction, so the build is O(8 cells); stored as one byte per entry.
+#include <algorithm>
+
 #include "voronav/planning/internal/jps_data.hpp"
 
 namespace voronav::planning::internal {
 
 void build_jump_tables(JpsMapData& m) {
   const int w = m.width, h = m.height;
-  m.table.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 8, 0);
+  std::vector<std::int32_t> table(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 8, 0);
   auto at = [&](int x, int y, int d) -> std::int32_t& {
-    return m.table[8 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
-                        static_cast<std::size_t>(x)) +
-                   static_cast<std::size_t>(d)];
+    return table[8 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+                      static_cast<std::size_t>(x)) +
+                 static_cast<std::size_t>(d)];
   };
   auto extend = [](std::int32_t next) { return next > 0 ? next + 1 : next - 1; };
   // Straight directions first (the diagonal entries read them), then the diagonals.
@@ -43,6 +45,13 @@ void build_jump_tables(JpsMapData& m) {
         at(x, y, d) = v;
       }
     }
+  }
+  // Entries past +-127 become kFarJump: along a direction the entries change by one per step
+  // (the jump point, or the wall, comes one step nearer), so the entry 127 steps on carries on.
+  m.table.resize(table.size());
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const std::int32_t v = table[i];
+    m.table[i] = static_cast<std::int8_t>(v > kFarSteps || v < -kFarSteps ? kFarJump : v);
   }
 }
 

@@ -209,6 +209,37 @@ TEST(JpsPlus, TablesAreBuiltOncePerMapAndInvalidated) {
   EXPECT_EQ(p.prepare(other), 0.0);
 }
 
+// JPS+ stores one byte per entry: jumps past 127 cells chain through kFarJump entries. Long
+// walls far from the edges put jump points 128-290 cells away in all eight directions.
+TEST(JpsPlus, JumpsFartherThan127CellsMatchAStar) {
+  BinaryGrid g(300, 300, 0);
+  for (int i = 40; i < 260; ++i) {
+    g[Cell{150, i}] = 1;  // vertical wall with a gap
+    g[Cell{i, 20}] = 1;   // horizontal walls
+    g[Cell{i, 280}] = 1;
+  }
+  g[Cell{150, 200}] = 0;
+  std::mt19937 rng(11);
+  AStarPlanner astar;
+  JpsPlusPlanner plus({.record_expanded = true});
+  JpsPlanner online({.record_expanded = true});
+  int long_paths = 0;
+  for (int q = 0; q < 60; ++q) {
+    const Cell s{static_cast<int>(rng() % 300), static_cast<int>(rng() % 300)};
+    const Cell t{static_cast<int>(rng() % 300), static_cast<int>(rng() % 300)};
+    const PlanResult a = astar.plan(g, s, t);
+    const PlanResult j = plus.plan(g, s, t);
+    ASSERT_EQ(j.status, a.status) << q;
+    if (!a.ok()) continue;
+    EXPECT_EQ(j.length_cells, a.length_cells) << q;
+    EXPECT_TRUE(is_valid_path(g, j.path, Connectivity::k8)) << q;
+    // The tables stand for the online scans: the same jump points, expanded in the same order.
+    EXPECT_EQ(j.expanded_cells, online.plan(g, s, t).expanded_cells) << q;
+    long_paths += a.length_cells > 200.0;
+  }
+  EXPECT_GT(long_paths, 10);
+}
+
 TEST(Jps, CancelHookStopsTheSearch) {
   std::mt19937 rng(7);
   BinaryGrid g(200, 200, 0);

@@ -257,7 +257,8 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
   const int dir_step = eight ? 1 : 2;
   const int ndirs = eight ? 8 : 4;
   const bool no_cut = options.corner_rule == RasCornerRule::kNoCornerCutting;
-  const bool optimal = options.direction == RasDirection::kOptimal && goal_region.has_value();
+  const bool per_region =
+      options.direction == RasDirection::kOptimalPerRegion && goal_region.has_value();
   // Default: counter-clockwise from east (E, NE, N, ... or E, N, W, S).
   Order default_order{};
   for (int i = 0; i < 8 / dir_step; ++i)
@@ -269,6 +270,23 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
     goal_orders[static_cast<std::size_t>(2 * k + 1)] = make_order(k, -1, dir_step);
   }
   const bool until_goal = options.extent == RasExtent::kUntilGoal && goal_region.has_value();
+  // The order of kDefault and kOptimal (chosen here, once, from the start->goal direction).
+  // Per position i of the order: the neighbour's offset, and for a diagonal the offsets of its
+  // two flanking straight neighbours (0 for a straight step: no corner test).
+  std::array<std::ptrdiff_t, 8> step_off{}, flank_a{}, flank_b{};
+  {
+    const Order* o = &default_order;
+    if (options.direction == RasDirection::kOptimal && goal_region && *goal_region != start_region)
+      o = &goal_orders[goal_order_index(goal_region->x - start_region.x,
+                                        goal_region->y - start_region.y, eight)];
+    for (std::size_t i = 0; i < 8; ++i) {
+      const int k = (*o)[i];
+      step_off[i] = off[static_cast<std::size_t>(k)];
+      const bool corner = no_cut && (k & 1) != 0;
+      flank_a[i] = corner ? off[static_cast<std::size_t>(k - 1)] : 0;
+      flank_b[i] = corner ? off[static_cast<std::size_t>((k + 1) & 7)] : 0;
+    }
+  }
   const std::ptrdiff_t goal_p =
       goal_region ? static_cast<std::ptrdiff_t>(f.padded(*goal_region)) : -1;
   const int gx = goal_region ? goal_region->x + 1 : 0, gy = goal_region ? goal_region->y + 1 : 0;
@@ -312,15 +330,16 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
     }
     const std::ptrdiff_t p = queue[static_cast<std::size_t>(K)];
     bool found = false;
-    if (!optimal) {
-      // Default order: the directions themselves. Branches per neighbour follow the regular
-      // pattern of the wave front and predict well (as in a plain BFS).
-      for (int k = 0; k < 8; k += dir_step) {
-        const std::ptrdiff_t q = p + off[static_cast<std::size_t>(k)];
+    if (!per_region) {
+      // One order for the whole search (default, or toward the goal from the start). Branches
+      // per neighbour follow the regular pattern of the wave front and predict well (as in a
+      // plain BFS).
+      for (int i = 0; i < ndirs; ++i) {
+        const auto ui = static_cast<std::size_t>(i);
+        const std::ptrdiff_t q = p + step_off[ui];
         if (label[q] != RasField::kUnnumbered) continue;
-        if (no_cut && (k & 1) != 0 &&
-            (label[p + off[static_cast<std::size_t>(k - 1)]] == RasField::kObstacle ||
-             label[p + off[static_cast<std::size_t>((k + 1) & 7)]] == RasField::kObstacle))
+        if (flank_a[ui] != 0 && (label[p + flank_a[ui]] == RasField::kObstacle ||
+                                 label[p + flank_b[ui]] == RasField::kObstacle))
           continue;
         if (D > 0 && density(q) < D) {
           label[q] = RasField::kBelowDensity;
@@ -334,7 +353,7 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
         }
       }
     } else {
-      // Optimal order: it changes from region to region, so per-neighbour branches would not
+      // Order per region: it changes from region to region, so per-neighbour branches would not
       // predict. Neighbour states become bit masks over the directions (bit k = direction k)
       // from one load each, the mask is permuted into this region's order, and only its set bits
       // are visited.

@@ -107,7 +107,10 @@ RefBfs ref_bfs(const BinaryGrid& g, Cell start, std::optional<Cell> goal, const 
     const std::int32_t k = queue.front();
     queue.pop_front();
     const Cell c = r.cell[static_cast<std::size_t>(k)];
-    for (const int dir : ref_order(c, goal, o.direction == RasDirection::kOptimal, eight)) {
+    // kOptimal: one order, from the start toward the goal; kOptimalPerRegion: from each region.
+    const bool per_region = o.direction == RasDirection::kOptimalPerRegion;
+    for (const int dir :
+         ref_order(per_region ? c : start, goal, o.direction != RasDirection::kDefault, eight)) {
       const Cell n = c + kDir[dir];
       if (!g.contains(n) || g[n] != 0 || r.id[n] >= 0 || rejected[n]) continue;
       if ((dir % 2) == 1 && o.corner_rule == RasCornerRule::kNoCornerCutting) {
@@ -257,7 +260,9 @@ TEST(Ras, CountRuleParentEqualsBfsParentOnRandomMaps) {
     if (s.x < 0 || t.x < 0) continue;
     RasOptions o;
     o.connectivity = trial % 2 ? Connectivity::k8 : Connectivity::k4;
-    o.direction = (trial / 2) % 2 ? RasDirection::kOptimal : RasDirection::kDefault;
+    o.direction = (trial / 2) % 2 == 0 ? RasDirection::kDefault
+                  : (trial / 48) % 2   ? RasDirection::kOptimalPerRegion
+                                       : RasDirection::kOptimal;
     o.density = (trial / 4) % 3 == 0 ? 0 : ((trial / 4) % 3 == 1 ? 5 : 8);
     o.extent = (trial / 12) % 2 ? RasExtent::kWholeMap : RasExtent::kUntilGoal;
     o.corner_rule =
@@ -290,7 +295,9 @@ TEST(Ras, PathHasMinimumRegionCountAndIsFoundWheneverOneExists) {
     if (s.x < 0 || t.x < 0) continue;
     RasOptions o;
     o.connectivity = trial % 2 ? Connectivity::k8 : Connectivity::k4;
-    o.direction = (trial / 2) % 2 ? RasDirection::kOptimal : RasDirection::kDefault;
+    o.direction = (trial / 2) % 2 == 0 ? RasDirection::kDefault
+                  : (trial / 8) % 2    ? RasDirection::kOptimalPerRegion
+                                       : RasDirection::kOptimal;
     o.density = (trial / 4) % 2 ? 6 : 0;
     o.corner_rule = RasCornerRule::kNoCornerCutting;  // cell paths checked without corner cuts
     if (o.density > 0 && s != t && ref_density(g, t) < o.density) continue;
@@ -536,13 +543,23 @@ TEST(Ras, OptimalDirectionNumbersFewerRegionsWithTheSamePathLength) {
   const BinaryGrid g(200, 200, 0);
   RasPlanner def({.direction = RasDirection::kDefault});
   RasPlanner opt({.direction = RasDirection::kOptimal});
-  const RasResult a = def.plan_ras(g, {20, 100}, {180, 130});
-  const RasResult b = opt.plan_ras(g, {20, 100}, {180, 130});
-  ASSERT_TRUE(a.ok());
-  ASSERT_TRUE(b.ok());
-  EXPECT_EQ(a.path_regions.size(), b.path_regions.size());
-  EXPECT_EQ(a.path_regions.size(), 161u);  // Chebyshev distance 160 + 1
-  EXPECT_LT(b.regions, a.regions);
+  RasPlanner per({.direction = RasDirection::kOptimalPerRegion});
+  // Goals west, north-east and south of the start: the default order (east first) is worst for
+  // the first.
+  for (const Cell goal : {Cell{20, 130}, Cell{180, 170}, Cell{110, 5}}) {
+    const Cell start{180, 100};
+    const RasResult a = def.plan_ras(g, start, goal);
+    const RasResult b = opt.plan_ras(g, start, goal);
+    const RasResult c = per.plan_ras(g, start, goal);
+    ASSERT_TRUE(a.ok() && b.ok() && c.ok());
+    const auto regions = static_cast<std::size_t>(
+        std::max(std::abs(goal.x - start.x), std::abs(goal.y - start.y)) + 1);
+    EXPECT_EQ(a.path_regions.size(), regions);  // Chebyshev distance + 1, whatever the order
+    EXPECT_EQ(b.path_regions.size(), regions);
+    EXPECT_EQ(c.path_regions.size(), regions);
+    EXPECT_LT(b.regions, a.regions) << goal.x << "," << goal.y;
+    EXPECT_LE(c.regions, b.regions) << goal.x << "," << goal.y;
+  }
 }
 
 TEST(Ras, WholeMapFieldAnswersEveryGoal) {

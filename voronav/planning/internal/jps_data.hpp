@@ -1,12 +1,12 @@
 // Per-map data of the JPS planners (jps.hpp): the bit-packed map and its transpose, and for JPS+
-// the jump-point tables. Internal; built by JpsPlanner::prepare().
+// the jump-point tables; and the per-planner search state reused between queries. Internal; built
+// by JpsPlanner::prepare().
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "voronav/planning/internal/bit_grid.hpp"
-#include "voronav/planning/internal/indexed_heap.hpp"
 
 namespace voronav::planning::internal {
 
@@ -24,22 +24,46 @@ struct JpsMapData {
   int width = 0, height = 0;
   BitGrid rows;  ///< row-major bits (free(row = y, col = x))
   BitGrid cols;  ///< transposed (free(row = x, col = y))
-  /// JPS+ only: table[8 * (y * width + x) + d] > 0: a jump point that many steps away in
-  /// direction d; <= 0: no jump point, -table free steps before the wall (or the map edge).
-  std::vector<std::int32_t> table;
+  /// JPS+ only: entry 8 * (y * width + x) + d in -127..127: > 0: a jump point that many steps
+  /// away in direction d; <= 0: no jump point, -entry free steps before the wall (or the map
+  /// edge). kFarJump: no jump point within 127 steps, all free: continue from the cell 127 steps
+  /// on. One byte per entry (8 bytes per cell, one cache line holds 8 cells): the tables of a
+  /// 512x512 map take 2 MB, and a query touches fewer cache lines.
+  std::vector<std::int8_t> table;
 
   [[nodiscard]] bool free(int x, int y) const { return rows.free(y, x); }
 };
 
+inline constexpr int kFarJump = -128;
+inline constexpr int kFarSteps = 127;
+
 /// Builds the JPS+ tables of `m` (m.rows must be built).
 void build_jump_tables(JpsMapData& m);
 
+/// Search state of one node (one cell), 16 bytes so one cache line holds four: reset lazily by a
+/// search stamp instead of clearing arrays per query.
+struct JpsNode {
+  std::uint32_t stamp;  ///< == search id: generated (open); == search id + 1: closed
+  std::int32_t parent;  ///< cell index of the parent jump point, -1 for the start
+  std::int32_t gs, gd;  ///< g as exact (straight, diagonal) step counts
+};
+
+/// Open list entry: a 128-bit key ordered like (f, larger g first, node): bits 64-127 = the bits
+/// of f (exact, double; f >= 0 so its bits order like its value), bits 32-63 = inverted bits of g
+/// as a float (g only breaks f ties), bits 0-31 = the node index.
+__extension__ using JpsOpenItem = unsigned __int128;
+
+/// A successor found while expanding one node: cell, and the steps from that node.
+struct JpsSuccessor {
+  std::int32_t node, x, y, ds, dd;
+};
+
 struct JpsSearchState {
-  std::vector<std::int32_t> gs, gd, parent, heap_pos;
-  std::vector<std::uint32_t> stamp;
-  std::vector<std::uint8_t> closed;
-  std::uint32_t search_id = 0;
-  IndexedMinHeap open;
+  std::vector<JpsNode> nodes;
+  std::vector<JpsSuccessor> successors;
+  std::vector<std::int32_t> chain;  ///< jump points from the goal back to the start
+  std::vector<JpsOpenItem> open;
+  std::uint32_t search_id = 0;  ///< even; advanced by 2 per query
 };
 
 }  // namespace voronav::planning::internal
