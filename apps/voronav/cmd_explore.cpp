@@ -32,6 +32,7 @@ struct ExploreArgs {
   int picture_px = 900;
   bool json = false;
   std::filesystem::path mcap;
+  double known_map_period_s = 5.0;
 };
 
 render::Color robot_color(std::size_t i) {
@@ -91,6 +92,31 @@ void save_pictures(const OccupancyGrid& world, const exploration::ExplorationRes
   fig.save(dir / "tree.png");
 }
 
+/// The fields every command's JSON has (docs/ros.md): frame, units, the inputs echoed, each
+/// robot's start and final pose {x, y, yaw} in `map`.
+nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
+                           const exploration::ExplorationResult& r) {
+  j["frame_id"] = "map";
+  j["units"] = {{"time", "s"}, {"length", "m"}, {"coverage", "fraction"}, {"yaw", "rad"}};
+  j["input"] = {{"map", a.world},   {"robots", a.robots},           {"method", a.method},
+                {"time_s", a.time}, {"tree_start_s", a.tree_start}, {"tree_replan", a.tree_replan},
+                {"seed", a.seed},   {"stop_at_coverage", a.stop_at}};
+  if (!a.start.empty()) {
+    const Vec2 s = parse_point(a.start, "--start");
+    j["input"]["start"] = {s.x, s.y};
+  }
+  nlohmann::json poses = nlohmann::json::array();
+  const auto& rec = r.recording;
+  for (std::size_t i = 0; i < rec.starts.size(); ++i) {
+    nlohmann::json p = {{"id", i}, {"start", pose_json({rec.starts[i], 0.0})}};
+    if (!rec.frames.empty() && i < rec.frames.back().poses.size())
+      p["final"] = pose_json(rec.frames.back().poses[i]);
+    poses.push_back(p);
+  }
+  j["robot_poses"] = poses;
+  return j;
+}
+
 void run(const ExploreArgs& a) {
   OccupancyGrid world;
   if (a.world == "paper") {
@@ -118,20 +144,26 @@ void run(const ExploreArgs& a) {
     if (ec) throw Error(a.out.string(), 0, "cannot create the output folder: " + ec.message());
     std::ofstream f(a.out / "exploration.json");
     if (!f) throw Error((a.out / "exploration.json").string(), 0, "cannot write");
-    f << exploration::to_json(r, true) << "\n";
+    f << with_frames(nlohmann::json::parse(exploration::to_json(r, true)), a, r).dump() << "\n";
     save_pictures(exploration::resample_world(world, o.min_cell_size), r, a.out, a.picture_px);
     report::write_replay_html(exploration_recording(r), (a.out / "index.html").string());
   }
   if (!a.mcap.empty()) {
-    // /map: the ground truth explored; /known_map: the team's merged map at the end.
+    // /map: the ground truth explored (it does not change); /known_map: the team's merged map
+    // as it grows, every --known-map-period seconds from the cells' first-seen times.
     report::Recording rec = exploration_recording(r);
     rec.map = exploration::resample_world(world, o.min_cell_size);
+    rec.obstacle_changes.clear();  // the page's reveal of the team map, not changes of /map
     bag::BagExtras extras;
-    extras.known_maps.emplace_back(r.sim_time_s, r.recording.team_map);
+    if (r.recording.reveal_time.size() == r.recording.team_map.size())
+      extras.known_maps = bag::known_map_series(r.recording.team_map, r.recording.reveal_time,
+                                                r.sim_time_s, a.known_map_period_s);
+    else
+      extras.known_maps.emplace_back(r.sim_time_s, r.recording.team_map);
     bag::write_run_bag(rec, a.mcap, extras);
   }
   if (a.json) {
-    print_json(nlohmann::json::parse(exploration::to_json(r, false)));
+    print_json(with_frames(nlohmann::json::parse(exploration::to_json(r, false)), a, r));
   } else {
     const auto opt = [](const std::optional<double>& v) {
       return v ? std::to_string(*v) + " s" : std::string("not reached");
@@ -154,9 +186,10 @@ void setup(CLI::App& app) {
       "explore",
       "Explore an unknown world with a robot team (seed 004 tree or frontier baselines)");
   auto args = std::make_shared<ExploreArgs>();
-  cmd->add_option("--world", args->world,
-                  "Ground-truth world: ROS map .yaml, Moving AI .map, floor plan .png/.pgm, or "
-                  "'paper' (the seed 004 20x20 m world)")
+  cmd->add_option("--map,--world", args->world,
+                  "The world to explore (the robots do not know it): ROS map .yaml, Moving AI "
+                  ".map, floor plan .png/.pgm, or 'paper' (the paper's 20 m x 20 m test world); "
+                  "--world is the older name")
       ->required();
   cmd->add_option("--robots", args->robots, "Number of robots (1..64)")
       ->check(CLI::Range(1, 64))
@@ -188,6 +221,11 @@ void setup(CLI::App& app) {
   cmd->add_option("--mcap", args->mcap,
                   "Write a ROS 2 bag (MCAP): /map, /known_map, /tf, /robots, /voronoi, "
                   "/robot_N/plan (docs/ros.md)");
+  cmd->add_option("--known-map-period", args->known_map_period_s,
+                  "With --mcap: publish /known_map every this many seconds of simulated time [s] "
+                  "(at most 200 maps per bag)")
+      ->check(finite_range(1e-3, 1e6))
+      ->capture_default_str();
   cmd->add_option("--picture-px", args->picture_px, "Larger side of the pictures [px]")
       ->check(CLI::Range(100, 4000))
       ->capture_default_str();
