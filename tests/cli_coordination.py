@@ -37,6 +37,11 @@ def case_crossing_delay():
     check_summary(out, 2)
     d = {a["id"]: a["delay"] for a in out["agents"]}
     check(d[1] == 0 and abs(d[2] - 2.25) < 1e-9, "hand-computed delay 2.25 s: " + str(d))
+    # The scenario has a map (two crossing corridors): a replay page and a trajectory picture.
+    with tempfile.TemporaryDirectory() as o:
+        run("coordinate", "--scenario", CROSSING, "--search", "none", "--out", o)
+        for f in ("index.html", "trajectories.png", "collision_map.png"):
+            check(os.path.getsize(os.path.join(o, f)) > 1000, f"{f}: {os.listdir(o)}")
 
 
 def case_mapf_searches():

@@ -2,6 +2,7 @@
 // feature points, Voronoi tree dispatch) or a frontier baseline (nearest frontier / Burgard
 // coordinated). Thin over voronav::exploration::run_exploration; JSON out, optional pictures
 // and the recording in --out DIR.
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -136,6 +137,12 @@ void run(const ExploreArgs& a) {
     o.start = parse_point(a.start, "--start");
   else if (a.world == "paper")
     o.start = exploration::kPaperWorldStart;
+  o.on_frame = [limit = a.time](double t, double coverage) {
+    char what[96];
+    std::snprintf(what, sizeof what, "of %.0f s simulated, coverage %.1f %%", limit,
+                  100.0 * coverage);
+    set_progress(t / limit, what);
+  };
   const exploration::ExplorationResult r = exploration::run_exploration(world, o);
 
   if (!a.out.empty()) {
@@ -184,7 +191,10 @@ void run(const ExploreArgs& a) {
 void setup(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "explore",
-      "Explore an unknown world with a robot team (seed 004 tree or frontier baselines)");
+      "Explore an unknown world with a team of robots: reactive search, then a Voronoi tree of "
+      "the places worth visiting shared out among the robots (Lee & Joo, 'Distributed search of "
+      "swarm robots in unknown environments with a tree structure', 2018), or frontier "
+      "baselines");
   auto args = std::make_shared<ExploreArgs>();
   cmd->add_option("--map,--world", args->world,
                   "The world to explore (the robots do not know it): ROS map .yaml, Moving AI "
@@ -211,7 +221,7 @@ void setup(CLI::App& app) {
       ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--start", args->start,
-                  "Team start X,Y in world metres (default: a seeded free spot; (2,2) for paper)");
+                  "Team start X,Y [m, map frame] (default: a seeded free spot; (2,2) for paper)");
   cmd->add_option("--stop-at", args->stop_at,
                   "Stop when the coverage reaches this fraction (default: run the full time)")
       ->check(finite_range(0.0, 1.0));
@@ -229,6 +239,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--picture-px", args->picture_px, "Larger side of the pictures [px]")
       ->check(CLI::Range(100, 4000))
       ->capture_default_str();
+  add_quiet_flag(cmd);
   cmd->add_flag("--json", args->json,
                 "JSON output: coverage, t90_s, t99_s (null if not reached), distance_m, "
                 "collisions, overlap, feature_points, leaves, ...");

@@ -367,13 +367,20 @@ void run(const NetsimArgs& a) {
   // The runs the replay page (--out) and the bag (--mcap) show, of the last method.
   const int page_run = std::min(plan.runs, 5), bag_run = std::min(plan.runs, 2);
   std::map<int, dds::DdsRunResult> recorded;  // --transport dds: those runs, as recorded
-  for (auto m : methods) {
+  for (const auto& m : methods) {
     std::vector<sim::NetSimMetrics> all;
     for (int run = 1; run <= plan.runs; ++run) {
       const auto sc = plan.scenario(run);
       sim::NetSimOptions o = plan.options;
       o.method = m;
       nlohmann::json extra = nlohmann::json::object();
+      {
+        const auto done = static_cast<double>(
+            (&m - methods.data()) * static_cast<std::ptrdiff_t>(plan.runs) + (run - 1));
+        set_progress(done / static_cast<double>(methods.size() * plan.runs),
+                     "of the runs: run " + std::to_string(run) + " of " +
+                         std::to_string(plan.runs) + " (" + std::string(sim::to_string(m)) + ")");
+      }
       if (a.transport == "dds") {
         const bool record = m == methods.back() && ((!a.out.empty() && run == page_run) ||
                                                     (!a.mcap.empty() && run == bag_run));
@@ -508,40 +515,61 @@ void run(const NetsimArgs& a) {
 void setup(CLI::App& app) {
   auto args = std::make_shared<NetsimArgs>();
   auto* c =
-      app.add_subcommand("netsim", "Networked robots (seed 000): decentralized vs centralized");
+      app.add_subcommand("netsim",
+                         "Networked robots find a route for one of them (the source) to a "
+                         "destination, by passing Voronoi points from robot to robot "
+                         "(decentralized) or by asking every robot for its map (centralized); "
+                         "from Kim, 'Decentralized robot navigation in dynamic environments', "
+                         "M.Sc. thesis, 2010");
   c->add_option("--scenario", args->scenario,
-                "Table 6 scenario 1|2|3|4, or a scenario file (YAML, docs/formats.md; one run)");
+                "1, 2, 3 or 4: the thesis's test scenarios (1: 6 robots in 40 m x 40 m, 2: 6 "
+                "robots in 80 m x 80 m, 3: 12 robots in 40 m, 4: 12 robots in 80 m, generated "
+                "office worlds), or a scenario file (YAML, docs/formats.md; one run)");
   auto* method = c->add_option("--method", args->method,
                                "centralized|decentralized|both (default: both, or the file's)");
-  auto* runs = c->add_option("--runs", args->runs, "runs of Table 7 (1..16)");
-  c->add_option("--run", args->run, "the run of Table 7 (1..16) --write-scenario writes");
+  auto* runs = c->add_option("--runs", args->runs,
+                             "how many of the thesis's 16 runs per scenario (1..16: 4 robot "
+                             "placements, first without then with 1, 2 or 3 obstacle changes)");
+  c->add_option("--run", args->run, "the run (1..16) that --write-scenario writes");
   c->add_option("--transport", args->transport,
                 "sim (every robot in this process, simulated radio) | dds (one process per "
                 "robot plus a world process, Cyclone DDS)")
       ->capture_default_str();
   c->add_option("--kill-robot", args->kill_robot,
-                "dds: fault injection, this robot's process dies after --kill-at-step")
+                "dds: fault injection, this robot's process (id from 0) dies after "
+                "--kill-at-step; what followed is reported on stderr and in the JSON")
       ->check(non_negative());
-  c->add_option("--kill-at-step", args->kill_at_step, "dds: the step after which it dies");
+  c->add_option("--kill-at-step", args->kill_at_step,
+                "dds: the simulation step after which it dies [steps of dt_s, 0.2 s by default]");
   c->add_option("--world-restart-at-step", args->world_restart_at_step,
-                "dds: the world process dies after this step and a new one resumes the run");
+                "dds: the world process dies after this step [steps] and a new one resumes "
+                "the run");
   c->add_option("--dds-timeout", args->dds_timeout_s, "dds: limit for one run [s]")
       ->capture_default_str();
-  auto* seed = c->add_option("--seed", args->seed, "world/placement seed (a file: options.seed)")
+  auto* seed = c->add_option("--seed", args->seed,
+                             "seed of the generated worlds and robot placements (a scenario "
+                             "file: overrides its options.seed)")
                    ->check(non_negative());
-  auto* loss = c->add_option("--loss", args->loss, "radio message loss probability");
+  auto* loss =
+      c->add_option("--loss", args->loss, "probability that a radio message is lost [0..1]");
   c->add_option("--write-scenario", args->write_scenario,
                 "write --scenario 1..4 --run K (or the given file) as a scenario file naming "
                 "--method (decentralized for both) and exit")
       ->check(output_file());
-  c->add_option("--out", args->out, "directory for per-run JSON")->check(output_dir());
+  c->add_option("--out", args->out,
+                "folder for netsim_<scenario>.json (every run) and index.html (the replay page)")
+      ->check(output_dir());
   c->add_option(
       "--mcap", args->mcap,
       "Write one run as a ROS 2 bag (MCAP): /map, /plan, /tf, /robots, /messages, /events "
       "(docs/ros.md)");
-  c->add_option("--plots", args->plots, "directory for per-run bar charts (PNG)")
+  c->add_option("--plots", args->plots,
+                "folder for bar charts (PNG) of traffic, computation, CPU time and travel per run")
       ->check(output_dir());
-  c->add_flag("--json", args->json, "machine-readable output");
+  add_quiet_flag(c);
+  c->add_flag("--json", args->json,
+              "JSON output: a summary per method, every run, frame_id, units, the inputs "
+              "(docs/ros.md)");
   c->callback([args, method, runs, seed, loss] {
     args->method_given = method->count() > 0;
     args->runs_given = runs->count() > 0;
