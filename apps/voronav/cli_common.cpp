@@ -146,6 +146,15 @@ void set_quiet(bool quiet) {
   g_quiet = quiet;
 }
 
+void clear_progress_line() {
+  const std::lock_guard lock(g_progress_mutex);
+  if (g_line_open.exchange(false)) {
+    const char clear[] = "\r\033[K";
+    const ssize_t n = ::write(STDERR_FILENO, clear, sizeof clear - 1);
+    (void)n;
+  }
+}
+
 void finish_progress() {
   g_finished = true;
   const std::lock_guard lock(g_progress_mutex);

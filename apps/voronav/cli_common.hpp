@@ -44,6 +44,8 @@ void set_progress(double fraction, const std::string& what = {});
 void set_quiet(bool quiet);
 /// Adds the --quiet flag to a command.
 void add_quiet_flag(CLI::App* command);
+/// Clears the progress line before a message on stderr (the next tick writes it again).
+void clear_progress_line();
 /// Clears the progress line (the command is done); called before the process exits.
 void finish_progress();
 

@@ -214,7 +214,7 @@ void setup(CLI::App& app) {
       ->check(finite_range(1e-3, 1e6))
       ->capture_default_str();
   cmd->add_option("--tree-start", args->tree_start,
-                  "tree: seconds of reactive search before the first Voronoi tree")
+                  "tree: reactive search before the first Voronoi tree [s]")
       ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Random seed (start spot, random driving)")

@@ -393,6 +393,7 @@ void run(const NetsimArgs& a) {
                  {"events", dds_events_json(r.events)}};
         if (const auto words = fault_report(a, r, o.dt_s); !words.empty()) {
           extra["faults"] = words;
+          clear_progress_line();
           std::cerr << "netsim: run " << run << " (" << sim::to_string(m) << "): " << words << "\n";
         }
         if (record) recorded[run] = std::move(r);
@@ -506,9 +507,13 @@ void run(const NetsimArgs& a) {
     std::cout << it.key() << ": success " << v["success_rate"].get<double>() * 100 << " %, traffic "
               << v["traffic_bytes"].get<double>() << " B in " << v["messages"].get<double>()
               << " messages, computation " << v["computation"].get<double>() << " (max per robot "
-              << v["max_robot_computation"].get<double>() << "), route after "
-              << v["route_time_s"].get<double>() << " s, travel " << v["travel_m"].get<double>()
-              << " m\n";
+              << v["max_robot_computation"].get<double>() << "), ";
+    // route_time_s is the mean over the runs that found a route.
+    if (v["success_rate"].get<double>() > 0.0)
+      std::cout << "route after " << v["route_time_s"].get<double>() << " s";
+    else
+      std::cout << "no route found";
+    std::cout << ", travel " << v["travel_m"].get<double>() << " m\n";
   }
 }
 
