@@ -7,12 +7,17 @@ For each map, K and presence convention, runs `voronav coordinate --method delay
 printed by --method sipp), the time the command reports, validity and what produced the result
 (restarts, fallback tiers, order rule). Writes a Markdown table.
 
+The SIPP priority orders compared are --sipp-orders (default edf, longest-first, deps and pbs:
+priority-based search). Besides the time the command reports, the CPU time of the process is
+recorded (the machine is shared: wall time is inflated when it is loaded).
+
 Usage: coordination_sipp.py VORONAV OUT.md [--ks 10,30,60,100,200] [--timeout 60]
-       [--delays-search edf] [--maps a,b,c]
+       [--delays-search edf] [--maps a,b,c] [--sipp-orders edf,longest-first,deps,pbs]
 """
 import argparse
 import json
 import os
+import resource
 import subprocess
 import sys
 import time
@@ -27,8 +32,14 @@ MAPS = {
 CONVENTIONS = [("wait", "stay"), ("appear", "leave")]
 
 
+def cpu_children():
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
 def run(binary, args, timeout):
     t0 = time.monotonic()
+    c0 = cpu_children()
     try:
         p = subprocess.run([binary, "coordinate", *args, "--json"], capture_output=True,
                            text=True, timeout=timeout)
@@ -36,9 +47,11 @@ def run(binary, args, timeout):
         return None, time.monotonic() - t0
     wall = time.monotonic() - t0
     try:
-        return json.loads(p.stdout), wall
+        out = json.loads(p.stdout)
     except json.JSONDecodeError:
-        return {"status": "error", "message": p.stderr.strip()[:120]}, wall
+        out = {"status": "error", "message": p.stderr.strip()[:120]}
+    out["cpu_s"] = cpu_children() - c0
+    return out, wall
 
 
 def main():
@@ -49,6 +62,7 @@ def main():
     ap.add_argument("--timeout", type=float, default=60.0)
     ap.add_argument("--delays-search", default="edf")
     ap.add_argument("--maps", default=",".join(MAPS))
+    ap.add_argument("--sipp-orders", default="edf,longest-first,deps,pbs")
     a = ap.parse_args()
     rows = []
     for name in a.maps.split(","):
@@ -58,13 +72,20 @@ def main():
         for k in map(int, a.ks.split(",")):
             for st, gl in CONVENTIONS:
                 conv = ["--agents", str(k), "--at-start", st, "--at-goal", gl]
-                sipp, sipp_wall = run(a.binary, [*base, *conv, "--method", "sipp"], a.timeout)
+                runs = []
+                for order in a.sipp_orders.split(","):
+                    extra = ["--pbs-time-limit", str(0.8 * a.timeout)] if order == "pbs" else []
+                    r, wall = run(a.binary, [*base, *conv, "--method", "sipp", "--order", order,
+                                             *extra], a.timeout)
+                    runs.append(("sipp/" + order, r, wall))
                 dl, dl_wall = run(a.binary, [*base, *conv, "--method", "delays", "--search",
                                              a.delays_search], a.timeout)
-                bm = sipp.get("bound_makespan") if sipp else None
-                bs = sipp.get("bound_sum") if sipp else None
-                for method, r, wall in (("delays/" + a.delays_search, dl, dl_wall),
-                                        ("sipp/edf", sipp, sipp_wall)):
+                runs.insert(0, ("delays/" + a.delays_search, dl, dl_wall))
+                bm = bs = None
+                for _, r, _ in runs[1:]:
+                    if r and r.get("bound_makespan"):
+                        bm, bs = r["bound_makespan"], r["bound_sum"]
+                for method, r, wall in runs:
                     row = {"map": name, "k": k, "conv": f"{st}/{gl}", "method": method,
                            "wall_s": wall}
                     if r is None:
@@ -73,19 +94,38 @@ def main():
                         row["status"] = r.get("status")
                         row["valid"] = r.get("valid")
                         row["time_s"] = r.get("time_ms", 0) / 1000.0
+                        row["cpu_s"] = r.get("cpu_s")
                         if r.get("makespan") is not None and bm:
                             row["ms"] = r["makespan"] / bm
                             row["sum"] = r["sum_of_arrivals"] / bs
-                        row["note"] = (f"restarts {r.get('restarts')}, tier fallbacks "
-                                       f"{r.get('soft_fallbacks')}" if "restarts" in r else
-                                       f"repairs {r.get('repairs')}")
+                        if r.get("pbs_used"):
+                            row["note"] = (f"PBS: {r.get('pbs_nodes')} nodes, "
+                                           f"{r.get('pbs_priority_pairs')} pairs, "
+                                           f"{r.get('pbs_replans')} SIPP calls; restarts before "
+                                           f"{r.get('restarts')}")
+                            if r.get("status") != "ok":
+                                row["note"] += "; " + str(r.get("message"))
+                        elif r.get("order_source") == "ga":
+                            row["note"] = (f"GA: {r.get('ga_generations')} generations, "
+                                           f"{r.get('ga_evaluations')} orders planned, "
+                                           + ("better than every seed"
+                                              if r.get("ga_improved_over_seeds")
+                                              else "a seed order is the best"))
+                        elif "restarts" in r:
+                            row["note"] = (f"restarts {r.get('restarts')}, tier fallbacks "
+                                           f"{r.get('soft_fallbacks')}")
+                        else:
+                            row["note"] = f"repairs {r.get('repairs')}"
                     rows.append(row)
                     print(json.dumps(row), flush=True)
     with open(a.out, "w") as f:
         f.write("| map | K | at-start/at-goal | method | status | valid | makespan / bound | "
-                "sum / bound | time [s] | what produced it |\n|---|---|---|---|---|---|---|---|---|---|\n")
+                "sum / bound | time [s] | CPU [s] | what produced it |\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
-            f.write("| {map} | {k} | {conv} | {method} | {st} | {v} | {ms} | {sm} | {t} | {n} |\n".format(
+            f.write("| {map} | {k} | {conv} | {method} | {st} | {v} | {ms} | {sm} | {t} | {c} | {n} "
+                    "|\n".format(
+                c=f"{r['cpu_s']:.2f}" if r.get("cpu_s") is not None else "–",
                 map=r["map"], k=r["k"], conv=r["conv"], method=r["method"], st=r["status"],
                 v="yes" if r.get("valid") else "no", ms=f"{r['ms']:.3f}" if "ms" in r else "–",
                 sm=f"{r['sum']:.3f}" if "sum" in r else "–",

@@ -117,6 +117,20 @@ def case_sipp_mapf():
         for a in out["agents"]:
             check(a["arrival"] >= a["shortest"] - 1e-9, "arrival >= shortest travel " + str(a))
         check(out["makespan"] >= out["bound_makespan"] - 1e-9, "makespan >= bound")
+    # PBS and the GA over SIPP orders say that they produced the result; deps is an order rule.
+    ws = ["--at-start", "wait", "--at-goal", "stay"]
+    out = json.loads(run("coordinate", *common, *ws, "--order", "pbs").stdout)
+    check(out["valid"] and out["order_source"] == "pbs" and out["pbs_used"]
+          and out["pbs_priority_pairs"] > 0 and out["pbs_replans"] >= 30, str(out)[:400])
+    check(sorted(out["order"]) == sorted(a["id"] for a in out["agents"]), "pbs order")
+    out = json.loads(run("coordinate", *common, *ws, "--order", "deps").stdout)
+    check(out["valid"] and out["order_source"] == "deps" and not out["pbs_used"], str(out)[:400])
+    ga = ["--method", "sipp", "--map", MAPF_MAP, "--scen", MAPF_SCEN, "--agents", "10", "--json"]
+    out = json.loads(run("coordinate", *ga, "--order", "ga", "--sipp-ga-time-limit", "0.3").stdout)
+    check(out["valid"] and out["order_source"] == "ga" and out["ga_evaluations"] >= 5,
+          str(out)[:400])
+    p = run("coordinate", *common, "--order", "magic", expect=2)
+    check("pbs" in p.stderr and "ga" in p.stderr, p.stderr)
     with tempfile.TemporaryDirectory() as d:
         run("coordinate", *common, "--at-start", "wait", "--at-goal", "stay", "--out", d)
         sched = json.load(open(os.path.join(d, "schedule.json")))

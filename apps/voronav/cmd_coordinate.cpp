@@ -37,8 +37,14 @@ struct CoordArgs {
   std::string order = "edf";
   bool cross_goals = false;
   std::string objective = "makespan";
+  bool no_pbs_fallback = false;
+  double pbs_time_limit = 60.0;
+  std::size_t pbs_max_nodes = 20000;
+  double sipp_ga_time_limit = 1.5;
   std::string at_start, at_goal;
   std::uint64_t seed = 1;
+  int ga_three_opt = 0;
+  int ga_population = 0;
   double node_spacing = -1.0;
   bool no_reduction = false;
   bool json = false;
@@ -218,6 +224,11 @@ void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::
   }
   opt.planning.max_restarts = a.max_restarts;
   opt.planning.avoid_goals = !a.cross_goals;
+  opt.pbs_fallback = !a.no_pbs_fallback;
+  opt.pbs.time_limit_s = a.pbs_time_limit;
+  opt.pbs.max_nodes = a.pbs_max_nodes;
+  opt.ga.seed = a.seed;
+  opt.ga.time_limit_s = a.sipp_ga_time_limit;
   const co::SippCoordinationResult r = co::coordinate_sipp(blocked, agents, opt);
   const co::IndividualBounds lb = co::individual_bounds(blocked, agents);
   const bool ok = r.plan.ok;
@@ -254,6 +265,13 @@ void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::
       {"restarts", r.plan.restarts},
       {"failures", failures},
       {"soft_fallbacks", r.plan.soft_fallbacks},
+      {"pbs_used", r.pbs_used},
+      {"pbs_nodes", r.pbs_nodes},
+      {"pbs_priority_pairs", r.pbs_pairs},
+      {"pbs_replans", r.pbs_replans},
+      {"ga_generations", r.ga_generations},
+      {"ga_evaluations", r.ga_evaluations},
+      {"ga_improved_over_seeds", r.ga_improved},
       {"expansions", r.plan.expansions},
       {"order", order},
       {"at_start", co::to_string(mo.at_start)},
@@ -329,6 +347,8 @@ void run(const CoordArgs& a) {
   opt.map = sc.map_options;
   opt.search.kind = co::parse_search_kind(a.search);
   opt.search.ga.seed = a.seed;
+  opt.search.ga.three_opt_iterations = a.ga_three_opt;
+  opt.search.ga.population = a.ga_population;
   opt.search.edf_reduction = !a.no_reduction;
   const co::CoordinationResult r = co::coordinate(agents, opt);
 
@@ -439,19 +459,39 @@ void setup(CLI::App& app) {
   cmd->add_option("--search", a->search,
                   "none | exhaustive | edf | ga (delays only; sipp uses --order)")
       ->capture_default_str();
-  cmd->add_option("--order", a->order,
-                  "sipp: priority order edf | index | shortest-first | longest-first | best "
-                  "(best: all of them, keep the best by --objective)")
+  cmd->add_option(
+         "--order", a->order,
+         "sipp: priority order edf | index | shortest-first | longest-first | deps | best | "
+         "pbs (best: all orders, keep the best by --objective; pbs: priority-based "
+         "search, Ma et al. 2019)")
       ->capture_default_str();
   cmd->add_flag("--cross-goals", a->cross_goals,
                 "sipp: do not try to keep off the goals of robots planned later first");
-  cmd->add_option("--objective", a->objective, "sipp --order best: makespan | sum")
+  cmd->add_option("--objective", a->objective, "sipp --order best / pbs: makespan | sum")
+      ->capture_default_str();
+  cmd->add_flag("--no-pbs-fallback", a->no_pbs_fallback,
+                "sipp: do not run PBS when prioritized planning fails in every order");
+  cmd->add_option("--pbs-time-limit", a->pbs_time_limit, "sipp: PBS wall-clock budget [s]")
+      ->check(positive())
+      ->capture_default_str();
+  cmd->add_option("--sipp-ga-time-limit", a->sipp_ga_time_limit,
+                  "sipp --order ga: wall-clock budget of the GA over SIPP orders [s]")
+      ->check(positive())
+      ->capture_default_str();
+  cmd->add_option("--pbs-max-nodes", a->pbs_max_nodes, "sipp: PBS high-level node budget")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_option("--max-restarts", a->max_restarts,
                   "sipp: failed-robot-first restarts (-1 = number of robots)")
       ->capture_default_str();
   cmd->add_flag("--no-reduction", a->no_reduction,
                 "search all robots, not only the EDF urgent group");
+  cmd->add_option("--ga-three-opt", a->ga_three_opt,
+                  "GA: 3-opt moves tried per child (0 = N(N-1), the paper's; -1 = no 3-opt)")
+      ->capture_default_str();
+  cmd->add_option("--ga-population", a->ga_population, "GA: population size (0 = N, the paper's)")
+      ->check(non_negative())
+      ->capture_default_str();
   cmd->add_option("--seed", a->seed, "seed of the genetic search (--search ga)")
       ->check(non_negative())
       ->capture_default_str();

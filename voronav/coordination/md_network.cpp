@@ -135,7 +135,7 @@ namespace {
 /// stops (cut = true) as soon as a completion time exceeds `cutoff`.
 Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
                         std::span<const double> min_delays, const Resolution* base, int from,
-                        double cutoff) {
+                        double cutoff, int to = -1) {
   const int n = net.size();
   Resolution r;
   r.delays.assign(static_cast<std::size_t>(n), 0.0);
@@ -148,33 +148,86 @@ Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
     r.delays[i] = base->delays[i];
     r.completion[i] = base->completion[i];
   }
+  // With `to`: differs[j] = robot j's delay is not base's (bitwise).
+  std::vector<char> differs;
+  if (base != nullptr && to > from) differs.assign(static_cast<std::size_t>(n), 0);
+  const auto& boxes = net.boxes();
+  struct Arc {
+    double m, d, hd;
+    int j;
+  };
+  std::vector<Arc> act;
   for (int p = from; p < n; ++p) {
     const int i = order[static_cast<std::size_t>(p)];
+    if (!differs.empty()) {
+      if (p < to) {
+        differs[static_cast<std::size_t>(i)] = 1;  // its set of higher robots may have changed
+      } else {
+        bool stale = false;
+        for (const int k : net.incident(i)) {
+          const MdBox& b = boxes[static_cast<std::size_t>(k)];
+          const int j = b.a == i ? b.b : b.a;
+          if (rank[static_cast<std::size_t>(j)] < p && differs[static_cast<std::size_t>(j)]) {
+            stale = true;
+            break;
+          }
+        }
+        if (!stale) {
+          r.delays[static_cast<std::size_t>(i)] = base->delays[static_cast<std::size_t>(i)];
+          r.completion[static_cast<std::size_t>(i)] = base->completion[static_cast<std::size_t>(i)];
+          if (r.completion[static_cast<std::size_t>(i)] > cutoff) {
+            r.cut = true;
+            r.makespan = kInfinity;
+            r.sum_of_arrivals = kInfinity;
+            return r;
+          }
+          continue;
+        }
+      }
+    }
     double delay =
         min_delays.empty() ? 0.0 : std::max(0.0, min_delays[static_cast<std::size_t>(i)]);
+    // The boxes shared with higher robots, in incident order: (M, D) oriented with j above i
+    // (MdNetwork::oriented, inlined with the same arithmetic), j's delay.
+    act.clear();
+    for (const int k : net.incident(i)) {
+      const MdBox& b = boxes[static_cast<std::size_t>(k)];
+      const int j = b.a == i ? b.b : b.a;
+      if (rank[static_cast<std::size_t>(j)] > p) continue;  // j has lower priority
+      act.push_back(
+          {j == b.b ? b.d : b.m, j == b.b ? b.m : b.d, r.delays[static_cast<std::size_t>(j)], j});
+    }
+    // Passes until no box moves i (the delay only grows). A box whose D after the delays is
+    // <= epsilon stays so for every larger delay: it is dropped from later passes (it could
+    // never fire again, so the sequence of shifts, and the result, are unchanged).
     bool changed = true;
     while (changed && r.status == ResolveStatus::kOk) {
       changed = false;
-      for (const int k : net.incident(i)) {
-        const MdBox& b = net.boxes()[static_cast<std::size_t>(k)];
-        const int j = b.a == i ? b.b : b.a;
-        if (rank[static_cast<std::size_t>(j)] > p) continue;  // j has lower priority
-        const auto [m, d] = net.oriented(k, j, r.delays[static_cast<std::size_t>(j)], delay);
-        if (m > kTimeEpsilon && d > kTimeEpsilon) {
+      std::size_t keep = 0;
+      for (std::size_t q = 0; q < act.size(); ++q) {
+        const Arc& e = act[q];
+        const double m = e.m + delay - e.hd;
+        const double d = e.d - delay + e.hd;
+        if (!(d > kTimeEpsilon)) continue;
+        act[keep++] = e;
+        if (m > kTimeEpsilon) {
           if (std::isinf(d)) {
             r.status = ResolveStatus::kNoDelaySchedule;
             r.blocked = i;
-            r.blocked_by = j;
+            r.blocked_by = e.j;
             break;
           }
           delay += d;
           changed = true;
         }
       }
+      if (r.status == ResolveStatus::kOk) act.resize(keep);
     }
     r.delays[static_cast<std::size_t>(i)] = delay;
     r.completion[static_cast<std::size_t>(i)] =
         net.travel_times()[static_cast<std::size_t>(i)] + delay;
+    if (!differs.empty() && p >= to)
+      differs[static_cast<std::size_t>(i)] = delay != base->delays[static_cast<std::size_t>(i)];
     if (r.status != ResolveStatus::kOk) break;
     if (r.completion[static_cast<std::size_t>(i)] > cutoff) {
       r.cut = true;
@@ -209,10 +262,11 @@ Resolution resolve(const MdNetwork& net, std::span<const int> order,
 }
 
 Resolution resolve_incremental(const MdNetwork& net, std::span<const int> order,
-                               const Resolution& base, int from, double cutoff) {
-  if (base.status != ResolveStatus::kOk || base.delays.size() != order.size() || from <= 0)
+                               const Resolution& base, int from, double cutoff, int to) {
+  if (base.status != ResolveStatus::kOk || base.delays.size() != order.size())
     return resolve_impl(net, order, {}, nullptr, 0, cutoff);
-  return resolve_impl(net, order, {}, &base, std::min<int>(from, net.size()), cutoff);
+  return resolve_impl(net, order, {}, &base, std::clamp<int>(from, 0, net.size()), cutoff,
+                      to > from ? std::min<int>(to, net.size()) : -1);
 }
 
 std::vector<OrientedArc> network_for_order(const MdNetwork& net, std::span<const int> order,

@@ -100,8 +100,13 @@ struct Resolution {
 /// only on the robots above it). Stops as soon as some completion time exceeds `cutoff`
 /// (Resolution::cut, makespan infinity): such an order cannot beat one of makespan <= cutoff.
 /// Otherwise the result equals resolve(net, order) exactly.
+/// `to` (> from, optional): the entries from `to` on are also `base`'s order's (3-opt moves a
+/// segment inside [from, to)); then a robot there is resolved again only when a robot above it
+/// that shares a box with it got a different delay, else its delay is copied (a robot's delay is
+/// a function of its higher neighbours' delays only, so the result is still exactly resolve()'s).
 [[nodiscard]] Resolution resolve_incremental(const MdNetwork& net, std::span<const int> order,
-                                             const Resolution& base, int from, double cutoff);
+                                             const Resolution& base, int from, double cutoff,
+                                             int to = -1);
 
 /// An arc of the network of a given order: from `high` to `low`, (M, D) after the delays.
 struct OrientedArc {

@@ -15,6 +15,7 @@
 // order; then prioritized SIPP; then the same continuous-time checker as the delay schedules.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,9 @@ struct PrioritizedOptions {
   bool full_starts = false;
   /// First tier avoids unplanned goals (with --at-goal stay) for all time.
   bool avoid_goals = true;
+  /// ... from the time the goal's robot could arrive at the earliest (its shortest travel time;
+  /// before that its goal is free whatever it does), not from time 0.
+  bool goals_from_arrival = true;
 };
 
 struct PrioritizedResult {
@@ -62,17 +66,52 @@ struct PrioritizedResult {
                                                  const PrioritizedOptions& options = {});
 
 /// Where the priority order comes from: the EDF order of the (M,D) network (seed 002, section
-/// 4.1), the index order, the robots by increasing or decreasing shortest travel time, or all of
-/// them, keeping the best by the objective.
-enum class OrderRule { kEdf, kIndex, kShortestFirst, kLongestFirst, kBest };
+/// 4.1), the index order, the robots by increasing or decreasing shortest travel time, the
+/// start/goal dependency order (dependency_order()), all of them keeping the best by the
+/// objective, or PBS (pbs.hpp: a search over priority pairs instead of one order).
+/// kGa: the paper's GA over SIPP orders (sipp_ga.hpp), seeded with all the rules before it.
+enum class OrderRule {
+  kEdf,
+  kIndex,
+  kShortestFirst,
+  kLongestFirst,
+  kDependencies,
+  kBest,
+  kPbs,
+  kGa
+};
 [[nodiscard]] OrderRule parse_order_rule(const std::string& s);
 [[nodiscard]] const char* to_string(OrderRule r);
+
+/// GA over SIPP orders (sipp_ga.hpp): the paper's operators, small budgets (an evaluation is a
+/// whole prioritized planning run).
+struct SippGaOptions {
+  std::uint64_t seed = 1;
+  int population = 8;  ///< orders kept (seeds first, then random orders)
+  int children = 4;    ///< crossovers per generation
+  double mutation_rate = 0.2;
+  int mutation_min_edges = 4, mutation_max_edges = 7;
+  double elitism = 0.2;  ///< the best fraction survives unchanged
+  int three_opt = 4;     ///< 3-opt segment moves tried per child (first improvement)
+  int max_generations = 50;
+  double time_limit_s = 1.5;  ///< stop starting generations after this wall-clock time
+};
+
+/// PBS budgets (pbs.hpp; declared here so that the coordinate options carry them).
+struct PbsBudget {
+  std::size_t max_nodes = 20'000;  ///< high-level nodes
+  double time_limit_s = 60.0;      ///< wall clock [s]
+};
 
 struct SippCoordinateOptions {
   CollisionMapOptions map;  ///< at-start / at-goal, node spacing for the (M,D) network
   OrderRule order = OrderRule::kEdf;
-  Objective objective = Objective::kMakespan;  ///< used by kBest (ties: the other one)
+  Objective objective = Objective::kMakespan;  ///< used by kBest and PBS (ties: the other one)
   PrioritizedOptions planning;
+  /// When prioritized planning fails in every order (after its restarts), run PBS.
+  bool pbs_fallback = true;
+  PbsBudget pbs;
+  SippGaOptions ga;         ///< --order ga
   double tolerance = 1e-6;  ///< checker tolerance [m]
 };
 
@@ -81,7 +120,14 @@ struct SippCoordinationResult {
   std::vector<Trajectory> trajectories;  ///< per robot, under the presence conventions
   Verification verification;
   bool valid = false;
-  std::string order_source;  ///< the rule that gave the returned order
+  std::string order_source;     ///< the rule that gave the returned order ("pbs" when PBS planned)
+  bool pbs_used = false;        ///< the plans come from PBS (--order pbs or the fallback)
+  std::size_t pbs_nodes = 0;    ///< PBS high-level nodes expanded
+  std::size_t pbs_pairs = 0;    ///< priority pairs of PBS's solution
+  std::size_t pbs_replans = 0;  ///< PBS low-level SIPP calls
+  int ga_generations = 0;       ///< --order ga: generations run
+  std::size_t ga_evaluations = 0;  ///< --order ga: orders planned
+  bool ga_improved = false;        ///< --order ga: found an order better than every seed
   double order_ms = 0.0, plan_ms = 0.0, verify_ms = 0.0, time_ms = 0.0;
   std::string message;
 };
@@ -94,10 +140,23 @@ struct SippCoordinationResult {
 /// Lower bounds: each robot's shortest 8-connected travel time on the map inflated by its radius
 /// (A*), ignoring the others; makespan bound = their max, sum bound = their sum.
 struct IndividualBounds {
-  std::vector<double> travel;  ///< [s] per robot
+  std::vector<double> travel;            ///< [s] per robot
+  std::vector<std::vector<Cell>> paths;  ///< the shortest paths (empty when none)
   double makespan = 0.0, sum = 0.0;
 };
 [[nodiscard]] IndividualBounds individual_bounds(const BinaryGrid& blocked,
                                                  const std::vector<Agent>& agents);
+
+/// Start/goal dependency order (issue #21, for --at-start wait / --at-goal stay): robot i should
+/// precede j when i's start lies on j's shortest path (i waits there until it leaves, so it should
+/// leave first) and follow j when i's goal lies on j's path (i parks there for ever, so j should
+/// pass first). "Lies on" counts the path's cells and the two side cells of each diagonal step
+/// (a disc parked there blocks the diagonal move). The dependency graph usually has cycles; the
+/// order is greedy: repeatedly the robot with the fewest predecessors not placed yet, ties by
+/// longer travel time first. `use_starts` / `use_goals` select the two kinds of arcs.
+[[nodiscard]] std::vector<int> dependency_order(const GridGeometry& geometry,
+                                                const std::vector<SippRobot>& robots,
+                                                const IndividualBounds& bounds, bool use_starts,
+                                                bool use_goals);
 
 }  // namespace voronav::coordination

@@ -280,14 +280,14 @@ class Ga {
   }
 
   Resolution evaluate_from(const std::vector<int>& seq, const Resolution& base, int from,
-                           double cutoff) {
+                           double cutoff, int to = -1) {
     ++evaluations_;
     std::vector<int> order;
     order.reserve(seq.size() + suffix_.size());
     for (const int l : seq)
       order.push_back(searched_[static_cast<std::size_t>(l)]);
     order.insert(order.end(), suffix_.begin(), suffix_.end());
-    return resolve_incremental(net_, order, base, from, cutoff);
+    return resolve_incremental(net_, order, base, from, cutoff, to);
   }
 
   int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
@@ -416,7 +416,9 @@ class Ga {
       cand.insert(cand.end(), rest.begin() + k, rest.end());
       // Positions before min(i, k) keep their robots: reuse their delays, and stop as soon as
       // the candidate's makespan exceeds the current one (it cannot be better then).
-      Resolution r = evaluate_from(cand, ind.res, std::min(i, k), ind.res.makespan + kEps);
+      // Positions from max(j + 1, k + len) on hold the same robots as before.
+      Resolution r = evaluate_from(cand, ind.res, std::min(i, k), ind.res.makespan + kEps,
+                                   std::max(j + 1, k + len));
       if (!r.cut && better(r, ind.res)) {
         ind.seq = cand;
         ind.res = std::move(r);

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <queue>
 #include <string>
-#include <unordered_map>
 
 #include "voronav/core/error.hpp"
 
@@ -159,11 +158,17 @@ class Search {
  public:
   Search(const BinaryGrid& free, double radius, double v, const Reservations& res,
          const SippOptions& o)
-      : free_(free), g_(free.geometry()), radius_(radius), v_(v), res_(res), o_(o), safe_() {}
+      : free_(free),
+        g_(free.geometry()),
+        radius_(radius),
+        v_(v),
+        res_(res),
+        o_(o),
+        safe_slot_(free.geometry().size(), -1) {}
 
   const std::vector<Interval>& safe(std::size_t cell) {
-    // Tables are hashed by cell: a search touches few cells of a large map.
-    if (const auto it = safe_.find(cell); it != safe_.end()) return it->second;
+    // Tables are computed on demand: a search touches few cells of a large map.
+    if (safe_slot_[cell] >= 0) return safe_pool_[static_cast<std::size_t>(safe_slot_[cell])];
     const Vec2 c = g_.cell_center(g_.cell_at(cell));
     std::vector<Interval> unsafe;
     for (const int id : res_.near(g_.cell_at(cell))) {
@@ -178,7 +183,8 @@ class Search {
       if (hi > lo) unsafe.push_back({lo, hi});
     }
     unsafe = merge(std::move(unsafe));
-    std::vector<Interval>& out = safe_[cell];
+    safe_slot_[cell] = static_cast<int>(safe_pool_.size());
+    std::vector<Interval>& out = safe_pool_.emplace_back();
     double t = 0.0;
     for (const auto& [lo, hi] : unsafe) {
       if (lo > t) out.push_back({t, lo});
@@ -188,8 +194,10 @@ class Search {
     return out;
   }
 
-  /// Bad departure intervals of the move a -> b, merged.
-  std::vector<Interval> bad(std::size_t a, std::size_t b) {
+  /// Bad departure intervals of the move a -> b, merged, as far as they matter for departures in
+  /// [lo, hi]: reserved segments that end before lo or begin after hi + the move's duration
+  /// cannot touch such a move and are skipped (the search asks again for later departures).
+  std::vector<Interval> bad(std::size_t a, std::size_t b, double lo, double hi, double tau) {
     const Vec2 pa = g_.cell_center(g_.cell_at(a)), pb = g_.cell_center(g_.cell_at(b));
     ++stamp_;
     if (seen_.size() < res_.segments().size()) seen_.resize(res_.segments().size(), 0);
@@ -198,9 +206,10 @@ class Search {
       for (const int id : res_.near(g_.cell_at(c))) {
         if (seen_[static_cast<std::size_t>(id)] == stamp_) continue;
         seen_[static_cast<std::size_t>(id)] = stamp_;
-        if (inactive(res_.segments()[static_cast<std::size_t>(id)])) continue;
-        const auto iv = bad_departures(pa, pb, v_, radius_,
-                                       res_.segments()[static_cast<std::size_t>(id)], o_.slack);
+        const auto& seg = res_.segments()[static_cast<std::size_t>(id)];
+        if (seg.s1 <= lo || seg.s0 >= hi + tau) continue;
+        if (inactive(seg)) continue;
+        const auto iv = bad_departures(pa, pb, v_, radius_, seg, o_.slack);
         if (iv) out.push_back(*iv);
       }
     }
@@ -226,9 +235,17 @@ class Search {
     using Entry = std::pair<double, int>;  // f, node
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
     // best arrival per (cell, interval)
-    std::unordered_map<std::size_t, std::vector<double>> best;
+    std::vector<int> best_slot(g_.size(), -1);
+    std::vector<std::vector<double>> best_pool;
+    auto best = [&](std::size_t cell) -> std::vector<double>& {
+      if (best_slot[cell] < 0) {
+        best_slot[cell] = static_cast<int>(best_pool.size());
+        best_pool.emplace_back();
+      }
+      return best_pool[static_cast<std::size_t>(best_slot[cell])];
+    };
     auto push = [&](std::size_t cell, int iv, double g, int parent) {
-      auto& b = best[cell];
+      auto& b = best(cell);
       if (b.size() <= static_cast<std::size_t>(iv))
         b.resize(static_cast<std::size_t>(iv) + 1, kInfinity);
       if (g >= b[static_cast<std::size_t>(iv)]) return;
@@ -253,7 +270,7 @@ class Search {
       const auto [f, ni] = open.top();
       open.pop();
       const Node n = nodes[static_cast<std::size_t>(ni)];
-      if (n.g > best[n.cell][static_cast<std::size_t>(n.interval)]) continue;
+      if (n.g > best(n.cell)[static_cast<std::size_t>(n.interval)]) continue;
       if (++expansions > o_.max_expansions) break;
       if (stats) ++stats->expansions;
       const auto& here = safe(n.cell)[static_cast<std::size_t>(n.interval)];
@@ -292,19 +309,19 @@ class Search {
         return merged;
       }
       const Cell c = g_.cell_at(n.cell);
-      const Vec2 pc = g_.cell_center(c);
       for (int d = 0; d < 8; ++d) {
         const Cell q{c.x + kDx[d], c.y + kDy[d]};
         if (!g_.contains(q) || free_[q] != 0) continue;
         if (d >= 4 && (free_[Cell{c.x + kDx[d], c.y}] != 0 || free_[Cell{c.x, c.y + kDy[d]}] != 0))
           continue;  // no corner cutting
         const std::size_t qi = g_.index(q);
-        const double tau = distance(pc, g_.cell_center(q)) / v_;
-        const std::size_t ek = n.cell * 8 + static_cast<std::size_t>(d);
-        auto eit = edge_bad_.find(ek);
-        if (eit == edge_bad_.end()) eit = edge_bad_.emplace(ek, bad(n.cell, qi)).first;
-        const auto& bads = eit->second;
+        const double tau = (d >= 4 ? std::sqrt(2.0) : 1.0) * g_.resolution / v_;
         const auto& targets = safe(qi);
+        if (targets.empty()) continue;
+        // Departures that can matter: from n.g to the end of this interval or of v's last one.
+        const double hi_dep = std::min(here.second, targets.back().second - tau);
+        if (n.g > hi_dep) continue;
+        const std::vector<Interval> bads = bad(n.cell, qi, n.g, hi_dep, tau);
         for (std::size_t k = 0; k < targets.size(); ++k) {
           const double lo = std::max(n.g, targets[k].first - tau);
           const double hi = std::min(here.second, targets[k].second - tau);
@@ -336,8 +353,8 @@ class Search {
   double radius_, v_;
   const Reservations& res_;
   const SippOptions& o_;
-  std::unordered_map<std::size_t, std::vector<Interval>> safe_;
-  std::unordered_map<std::size_t, std::vector<Interval>> edge_bad_;  // per (cell, direction)
+  std::vector<int> safe_slot_;  // per cell: index into safe_pool_, -1 = not yet
+  std::vector<std::vector<Interval>> safe_pool_;
   std::vector<unsigned> seen_;
   unsigned stamp_ = 0;
 };
