@@ -160,7 +160,12 @@ def case_errors():
         check("bad.yaml" in p.stderr and "v_max" in p.stderr, p.stderr)
         p = run("coordinate", "--scenario", CROSSING, "--method", "magic", expect=2)
         check("delays|sipp" in p.stderr, p.stderr)
-        p = run("coordinate", "--scenario", CROSSING, "--method", "sipp", expect=2)
+        # crossing.yaml has a map now; the same paths without one cannot be planned by SIPP.
+        nomap = os.path.join(d, "nomap.yaml")
+        with open(nomap, "w") as f:
+            f.write("robots:\n  - {id: 1, path: [[-10, 0], [10, 0]], radius: 0.5}\n"
+                    "  - {id: 2, path: [[0, -10], [0, 10]], radius: 0.5}\n")
+        p = run("coordinate", "--scenario", nomap, "--method", "sipp", expect=2)
         check("needs a map" in p.stderr, p.stderr)
         p = run("coordinate", "--scenario", CROSSING, "--search", "tabu", expect=2)
         check("none|exhaustive|edf|ga" in p.stderr, p.stderr)
