@@ -37,6 +37,11 @@ def case_crossing_delay():
     check_summary(out, 2)
     d = {a["id"]: a["delay"] for a in out["agents"]}
     check(d[1] == 0 and abs(d[2] - 2.25) < 1e-9, "hand-computed delay 2.25 s: " + str(d))
+    # The scenario has a map (two crossing corridors): a replay page and a trajectory picture.
+    with tempfile.TemporaryDirectory() as o:
+        run("coordinate", "--scenario", CROSSING, "--search", "none", "--out", o)
+        for f in ("index.html", "trajectories.png", "collision_map.png"):
+            check(os.path.getsize(os.path.join(o, f)) > 1000, f"{f}: {os.listdir(o)}")
 
 
 def case_mapf_searches():
@@ -155,7 +160,12 @@ def case_errors():
         check("bad.yaml" in p.stderr and "v_max" in p.stderr, p.stderr)
         p = run("coordinate", "--scenario", CROSSING, "--method", "magic", expect=2)
         check("delays|sipp" in p.stderr, p.stderr)
-        p = run("coordinate", "--scenario", CROSSING, "--method", "sipp", expect=2)
+        # crossing.yaml has a map now; the same paths without one cannot be planned by SIPP.
+        nomap = os.path.join(d, "nomap.yaml")
+        with open(nomap, "w") as f:
+            f.write("robots:\n  - {id: 1, path: [[-10, 0], [10, 0]], radius: 0.5}\n"
+                    "  - {id: 2, path: [[0, -10], [0, 10]], radius: 0.5}\n")
+        p = run("coordinate", "--scenario", nomap, "--method", "sipp", expect=2)
         check("needs a map" in p.stderr, p.stderr)
         p = run("coordinate", "--scenario", CROSSING, "--search", "tabu", expect=2)
         check("none|exhaustive|edf|ga" in p.stderr, p.stderr)

@@ -105,11 +105,46 @@ def case_coordinate():
 
 def case_explore():
     with tempfile.TemporaryDirectory() as out:
-        j = json.loads(run("explore", "--world", "paper", "--robots", "2", "--time", "30",
-                           "--json", "--out", out).stdout)
+        # --map, as every command takes it (--world is the older name of the same option).
+        j = json.loads(run("explore", "--map", "paper", "--robots", "2", "--time", "30",
+                           "--start", "2,2", "--json", "--out", out).stdout)
         check(0.0 <= j["coverage"] <= 1.0, "coverage must be a fraction")
+        check(j["frame_id"] == "map" and j["units"]["coverage"] == "fraction"
+              and j["units"]["length"] == "m" and j["units"]["time"] == "s", str(j)[:300])
+        check(j["input"]["map"] == "paper" and j["input"]["robots"] == 2
+              and j["input"]["time_s"] == 30 and j["input"]["start"] == [2, 2], str(j["input"]))
+        check(len(j["robot_poses"]) == 2, str(j["robot_poses"]))
+        for p in j["robot_poses"]:
+            check(is_pose(p["start"]) and is_pose(p["final"]), str(p))
+            check(near(p["start"]["x"], 2, 1.0) and near(p["start"]["y"], 2, 1.0), str(p))
         with open(os.path.join(out, "exploration.json")) as f:
-            check(0.0 <= json.load(f)["coverage"] <= 1.0, "exploration.json coverage")
+            e = json.load(f)
+            check(0.0 <= e["coverage"] <= 1.0, "exploration.json coverage")
+            check(e["frame_id"] == "map" and e["input"] == j["input"], "exploration.json frames")
+        old = json.loads(run("explore", "--world", "paper", "--robots", "2", "--time", "30",
+                             "--start", "2,2", "--json").stdout)
+        check(old["coverage"] == j["coverage"], "--world and --map give the same run")
+
+
+def case_netsim():
+    corridor = os.path.join(DATA, "netsim", "corridor.yaml")
+    j = json.loads(run("netsim", "--scenario", corridor, "--method", "decentralized",
+                       "--json").stdout)
+    check(j["frame_id"] == "map" and j["units"]["length"] == "m" and j["units"]["time"] == "s"
+          and j["units"]["traffic"] == "bytes" and j["units"]["success_rate"] == "fraction",
+          str(j)[:300])
+    check(j["methods"] == ["decentralized"], str(j["methods"]))
+    i = j["input"]
+    check(i["scenario"] == corridor and i["runs"] == 1 and i["transport"] == "sim"
+          and i["radio_range_m"] > 0 and i["dt_s"] > 0, str(i))
+    m = j["decentralized"]
+    check(0.0 <= m["success_rate"] <= 1.0, "success_rate must be a fraction")
+    r = m["per_run"][0]
+    check(is_pose(r["source_start"]) and is_pose(r["destination"]), str(r)[:300])
+    # The corridor's source (robot 0) starts at (2.1, 1.7); the destination is (38.5, 1.7).
+    check(near(r["source_start"]["x"], 2.1) and near(r["source_start"]["y"], 1.7), str(r))
+    check(near(r["destination"]["x"], 38.5) and near(r["destination"]["y"], 1.7), str(r))
+    check(r["source"] == 0 and r["robot_count"] == 10, str(r)[:300])
 
 
 CASES = {name[5:]: f for name, f in globals().items() if name.startswith("case_")}

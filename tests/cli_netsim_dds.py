@@ -19,7 +19,8 @@ CORRIDOR = os.path.join(ROOT, "data", "netsim", "corridor.yaml")
 run = runner(BIN, timeout=600)
 
 # Fields that depend on the machine, not on the run.
-MACHINE = {"cpu_s", "max_robot_cpu_s", "wall_s", "processes", "dead_robots", "world_restarts"}
+MACHINE = {"cpu_s", "max_robot_cpu_s", "wall_s", "processes", "dead_robots", "world_restarts",
+           "events", "faults"}
 
 
 def per_run(*args):
@@ -58,11 +59,12 @@ def case_scenario3_json():
     # The acceptance command: scenario 3 (12 robot processes) over DDS.
     p = run("netsim", "--scenario", "3", "--runs", "1", "--transport", "dds", "--json")
     d = json.loads(p.stdout)
-    check(set(d) == {"centralized", "decentralized"}, f"keyed by method: {list(d)}")
-    for m, v in d.items():
+    check(d["methods"] == ["centralized", "decentralized"], f"keyed by method: {list(d)}")
+    for m in d["methods"]:
+        v = d[m]
         check(v["success_rate"] == 1.0 and v["transport"] == "dds", f"{m}: {v}")
     s = json.loads(run("netsim", "--scenario", "3", "--runs", "1", "--json").stdout)
-    for m in d:
+    for m in d["methods"]:
         for k in ("messages", "traffic_bytes", "computation", "route_time_s", "travel_m"):
             check(d[m][k] == s[m][k], f"{m} {k}: dds {d[m][k]} vs sim {s[m][k]}")
 
@@ -81,6 +83,9 @@ def case_killed_relay():
     # continues the same search, which does not rebuild a Path lost at a dead relay: the run
     # either succeeds or reports the loss.
     check(r["success"] or r["paths_lost"] >= 1, f"the lost Path is reported: {r}")
+    # ... and in words, on stderr and in the JSON (issue #20).
+    check(r["faults"].startswith("robot 5 killed at step 20 (4.0 s)"), r["faults"])
+    check([e["event"] for e in r["events"]][:1] == ["killed"], f"events: {r['events']}")
     check(time.monotonic() - t0 < 300, "nothing hangs")
 
 

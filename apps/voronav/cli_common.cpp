@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <thread>
 
 #include <cmath>
@@ -123,20 +124,82 @@ extern "C" void on_interrupt(int) {
 }
 }  // namespace
 
-void watch_long_run(const std::string& command) {
+namespace {
+// Progress of the running command (set_progress), read by the watcher thread.
+std::mutex g_progress_mutex;
+std::string g_progress_text;           // e.g. "43 % of 600 s simulated"
+std::atomic<bool> g_quiet{false};      // --quiet
+std::atomic<bool> g_line_open{false};  // a "\r" line is on the terminal
+std::atomic<bool> g_finished{false};
+}  // namespace
+
+void set_progress(double fraction, const std::string& what) {
+  std::ostringstream os;
+  if (std::isfinite(fraction))
+    os << static_cast<int>(std::floor(std::clamp(fraction, 0.0, 1.0) * 100.0)) << " %";
+  if (!what.empty()) os << (os.tellp() > 0 ? " " : "") << what;
+  const std::lock_guard lock(g_progress_mutex);
+  g_progress_text = os.str();
+}
+
+void set_quiet(bool quiet) {
+  g_quiet = quiet;
+}
+
+void clear_progress_line() {
+  const std::lock_guard lock(g_progress_mutex);
+  if (g_line_open.exchange(false)) {
+    const char clear[] = "\r\033[K";
+    const ssize_t n = ::write(STDERR_FILENO, clear, sizeof clear - 1);
+    (void)n;
+  }
+}
+
+void finish_progress() {
+  g_finished = true;
+  const std::lock_guard lock(g_progress_mutex);
+  if (g_line_open.exchange(false)) {
+    const char clear[] = "\r\033[K";
+    const ssize_t n = ::write(STDERR_FILENO, clear, sizeof clear - 1);
+    (void)n;
+  }
+}
+
+void add_quiet_flag(CLI::App* command) {
+  command->add_flag_callback(
+      "--quiet", [] { set_quiet(true); },
+      "no progress lines on stderr (progress is shown only when stderr is a terminal, never on "
+      "stdout)");
+}
+
+void watch_long_run(const std::string& command, int argc, char** argv) {
   g_interrupt_line = "\nvoronav " + command + ": interrupted\n";
   std::signal(SIGINT, on_interrupt);
+  // --quiet is looked for here too: the watcher starts before the options are parsed.
+  for (int i = 2; i < argc; ++i)
+    if (std::strcmp(argv[i], "--quiet") == 0 && command.rfind("dds-", 0) != 0) g_quiet = true;
   const char* env = std::getenv("VORONAV_PROGRESS");
   const bool forced = env != nullptr && std::strcmp(env, "1") == 0;
-  if (!forced && !::isatty(STDERR_FILENO)) return;
-  std::thread([command] {
+  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  if (!forced && !tty) return;
+  std::thread([command, tty] {
+    // On a terminal: one line, rewritten every second from 2 s on. Otherwise (VORONAV_PROGRESS=1,
+    // e.g. a log file): a line every 10 s from 5 s on.
     const auto t0 = std::chrono::steady_clock::now();
-    for (int s = 5;; s += 10) {
+    for (int k = 0;; ++k) {
+      const int s = tty ? 2 + k : 5 + 10 * k;
       std::this_thread::sleep_until(t0 + std::chrono::seconds(s));
-      const std::string line = "voronav " + command + ": still running after " + std::to_string(s) +
-                               " s (Ctrl-C stops)\n";
+      if (g_quiet || g_finished) continue;
+      const std::lock_guard lock(g_progress_mutex);
+      if (g_finished) continue;
+      std::string line = "voronav " + command + ": ";
+      line += g_progress_text.empty()
+                  ? "still running after " + std::to_string(s) + " s (Ctrl-C stops)"
+                  : g_progress_text + ", " + std::to_string(s) + " s elapsed (Ctrl-C stops)";
+      line = tty ? "\r\033[K" + line : line + "\n";
       const ssize_t n = ::write(STDERR_FILENO, line.data(), line.size());
       (void)n;
+      if (tty) g_line_open = true;
     }
   }).detach();
 }

@@ -31,10 +31,23 @@ namespace voronav::cli {
 [[nodiscard]] CLI::Validator output_file();
 
 /// Long runs: Ctrl-C (SIGINT) ends the process at once with "voronav <command>: interrupted"
-/// and exit code 130; and when stderr is a terminal (or VORONAV_PROGRESS=1 is set), a line
-/// "voronav <command>: still running after N s (Ctrl-C stops)" every 10 s from 5 s on. A heartbeat,
-/// not a percentage: the commands differ too much to report finer progress from one place.
-void watch_long_run(const std::string& command);
+/// and exit code 130. When stderr is a terminal, a progress line on stderr, rewritten every second
+/// from 2 s on: "voronav <command>: 43 % of 600 s simulated, 5 s elapsed (Ctrl-C stops)" (what the
+/// command last gave set_progress(); "still running after N s" when it gives nothing); with
+/// VORONAV_PROGRESS=1 and
+/// stderr not a terminal, the same as a line every 10 s from 5 s on. Never on stdout; off with
+/// `--quiet` (found in argv, also before the options are parsed).
+void watch_long_run(const std::string& command, int argc, char** argv);
+/// The fraction of the work done (NaN: unknown) and what it is, e.g. (0.43, "of 600 s simulated").
+void set_progress(double fraction, const std::string& what = {});
+/// --quiet: no progress lines.
+void set_quiet(bool quiet);
+/// Adds the --quiet flag to a command.
+void add_quiet_flag(CLI::App* command);
+/// Clears the progress line before a message on stderr (the next tick writes it again).
+void clear_progress_line();
+/// Clears the progress line (the command is done); called before the process exits.
+void finish_progress();
 
 /// Parses "X,Y" (finite numbers); throws voronav::Error naming `option` otherwise.
 [[nodiscard]] Vec2 parse_point(const std::string& text, const std::string& option);

@@ -433,22 +433,28 @@ void run(const CoordArgs& a) {
 void setup(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "coordinate",
-      "Coordinate robots on fixed paths by start delays: collision maps, (M,D) network and "
-      "priority search (seed 002)");
+      "Coordinate robots on fixed paths by start delays: collision maps, an (M,D) network and "
+      "a search over priorities (Ji, Jung & Lee, 'Priority-based interactive multi-agent motion "
+      "planning with collision maps')");
   auto a = std::make_shared<CoordArgs>();
-  cmd->add_option("--scenario", a->scenario, "scenario YAML (map, robots)")
+  cmd->add_option("--scenario", a->scenario,
+                  "scenario YAML: map, robots with start, goal, radius and speed (docs/formats.md)")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--map", a->map, "MAPF map (Moving AI .map)")->check(CLI::ExistingFile);
-  cmd->add_option("--scen", a->scen, "MAPF .scen (first K rows = K robots)")
+  cmd->add_option("--map", a->map, "MAPF map (Moving AI .map; 1 cell = 1 m), with --scen")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--agents", a->agents, "K: number of .scen rows used")
+  cmd->add_option("--scen", a->scen,
+                  "MAPF .scen file: its first K rows (--agents) are the robots' starts and goals")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--agents", a->agents, "K: number of .scen rows used (robots)")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
-  cmd->add_option("--radius", a->radius, "robot radius for MAPF input [cells]")
+  cmd->add_option("--radius", a->radius,
+                  "robot radius for --map/--scen input [m] (a Moving AI cell is 1 m, so also "
+                  "[cells])")
       ->check(positive())
       ->capture_default_str();
   cmd->add_option("--method", a->method,
-                  "delays (seed 002: start delays on fixed paths) | sipp (prioritized SIPP)")
+                  "delays (the paper: start delays on fixed paths) | sipp (prioritized SIPP)")
       ->capture_default_str();
   cmd->add_option("--search", a->search,
                   "none | exhaustive | edf | ga (delays only; sipp uses --order)")
@@ -486,12 +492,22 @@ void setup(CLI::App& app) {
   cmd->add_option("--ga-population", a->ga_population, "GA: population size (0 = N, the paper's)")
       ->check(non_negative())
       ->capture_default_str();
-  cmd->add_option("--seed", a->seed, "GA seed")->check(non_negative())->capture_default_str();
-  cmd->add_option("--at-start", a->at_start, "wait (default) | appear");
-  cmd->add_option("--at-goal", a->at_goal, "stay (default) | leave");
-  cmd->add_option("--node-spacing", a->node_spacing, "path node spacing [m] (0 = automatic)")
+  cmd->add_option("--seed", a->seed, "seed of the genetic search (--search ga)")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--at-start", a->at_start,
+                  "before its delay a robot waits at its start (wait, default) or is not there "
+                  "yet (appear)");
+  cmd->add_option("--at-goal", a->at_goal,
+                  "after arriving a robot stays at its goal (stay, default) or leaves the map "
+                  "(leave)");
+  cmd->add_option("--node-spacing", a->node_spacing,
+                  "spacing of the path nodes the collision maps use [m] (0 = automatic)")
       ->check(non_negative());
-  cmd->add_flag("--json", a->json, "JSON output");
+  add_quiet_flag(cmd);
+  cmd->add_flag("--json", a->json,
+                "JSON output: per robot start/goal poses, delay, arrival, waypoints [t s, x m, y "
+                "m]; makespan, frame_id, units (docs/ros.md)");
   cmd->add_option("--out", a->out, "folder for schedule.json/.yaml and pictures")
       ->check(output_dir());
   cmd->add_option("--mcap", a->mcap,

@@ -54,7 +54,8 @@ struct DemoArgs {
   int robots = 5;
   std::uint64_t seed = 1;
   bool json = false;
-  bool mcap = false;  ///< also write each stage as a ROS 2 bag (*.mcap)
+  bool mcap = false;   ///< also write each stage as a ROS 2 bag (*.mcap)
+  bool quiet = false;  ///< no stage progress
 };
 
 /// Stage progress on stderr, only on a terminal and without --json (quiet in CI and pipes).
@@ -494,7 +495,7 @@ void run(const DemoArgs& a) {
   if (a.robots < 1 || a.robots > 20) throw Error("--robots", 0, "expected 1..20 robots");
   fs::create_directories(a.out);
   const auto t0 = Clock::now();
-  Progress progress(7, !a.json);
+  Progress progress(7, !a.json && !a.quiet);
   progress.begin("occupancy map from a simulated laser sweep");
   d.mapping_stage();
   progress.end();
@@ -585,6 +586,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "Seed of the sweep poses and the team")
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print summary.json to stdout");
+  cmd->add_flag("--quiet", args->quiet, "No stage progress on stderr");
   cmd->add_flag(
       "--mcap", args->mcap,
       "Also write each stage as a ROS 2 bag: plan.mcap, topology.mcap, coordination.mcap, "

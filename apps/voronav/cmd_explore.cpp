@@ -2,6 +2,7 @@
 // feature points, Voronoi tree dispatch) or a frontier baseline (nearest frontier / Burgard
 // coordinated). Thin over voronav::exploration::run_exploration; JSON out, optional pictures
 // and the recording in --out DIR.
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -32,6 +33,7 @@ struct ExploreArgs {
   int picture_px = 900;
   bool json = false;
   std::filesystem::path mcap;
+  double known_map_period_s = 5.0;
 };
 
 render::Color robot_color(std::size_t i) {
@@ -91,6 +93,31 @@ void save_pictures(const OccupancyGrid& world, const exploration::ExplorationRes
   fig.save(dir / "tree.png");
 }
 
+/// The fields every command's JSON has (docs/ros.md): frame, units, the inputs echoed, each
+/// robot's start and final pose {x, y, yaw} in `map`.
+nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
+                           const exploration::ExplorationResult& r) {
+  j["frame_id"] = "map";
+  j["units"] = {{"time", "s"}, {"length", "m"}, {"coverage", "fraction"}, {"yaw", "rad"}};
+  j["input"] = {{"map", a.world},   {"robots", a.robots},           {"method", a.method},
+                {"time_s", a.time}, {"tree_start_s", a.tree_start}, {"tree_replan", a.tree_replan},
+                {"seed", a.seed},   {"stop_at_coverage", a.stop_at}};
+  if (!a.start.empty()) {
+    const Vec2 s = parse_point(a.start, "--start");
+    j["input"]["start"] = {s.x, s.y};
+  }
+  nlohmann::json poses = nlohmann::json::array();
+  const auto& rec = r.recording;
+  for (std::size_t i = 0; i < rec.starts.size(); ++i) {
+    nlohmann::json p = {{"id", i}, {"start", pose_json({rec.starts[i], 0.0})}};
+    if (!rec.frames.empty() && i < rec.frames.back().poses.size())
+      p["final"] = pose_json(rec.frames.back().poses[i]);
+    poses.push_back(p);
+  }
+  j["robot_poses"] = poses;
+  return j;
+}
+
 void run(const ExploreArgs& a) {
   OccupancyGrid world;
   if (a.world == "paper") {
@@ -110,6 +137,12 @@ void run(const ExploreArgs& a) {
     o.start = parse_point(a.start, "--start");
   else if (a.world == "paper")
     o.start = exploration::kPaperWorldStart;
+  o.on_frame = [limit = a.time](double t, double coverage) {
+    char what[96];
+    std::snprintf(what, sizeof what, "of %.0f s simulated, coverage %.1f %%", limit,
+                  100.0 * coverage);
+    set_progress(t / limit, what);
+  };
   const exploration::ExplorationResult r = exploration::run_exploration(world, o);
 
   if (!a.out.empty()) {
@@ -118,20 +151,26 @@ void run(const ExploreArgs& a) {
     if (ec) throw Error(a.out.string(), 0, "cannot create the output folder: " + ec.message());
     std::ofstream f(a.out / "exploration.json");
     if (!f) throw Error((a.out / "exploration.json").string(), 0, "cannot write");
-    f << exploration::to_json(r, true) << "\n";
+    f << with_frames(nlohmann::json::parse(exploration::to_json(r, true)), a, r).dump() << "\n";
     save_pictures(exploration::resample_world(world, o.min_cell_size), r, a.out, a.picture_px);
     report::write_replay_html(exploration_recording(r), (a.out / "index.html").string());
   }
   if (!a.mcap.empty()) {
-    // /map: the ground truth explored; /known_map: the team's merged map at the end.
+    // /map: the ground truth explored (it does not change); /known_map: the team's merged map
+    // as it grows, every --known-map-period seconds from the cells' first-seen times.
     report::Recording rec = exploration_recording(r);
     rec.map = exploration::resample_world(world, o.min_cell_size);
+    rec.obstacle_changes.clear();  // the page's reveal of the team map, not changes of /map
     bag::BagExtras extras;
-    extras.known_maps.emplace_back(r.sim_time_s, r.recording.team_map);
+    if (r.recording.reveal_time.size() == r.recording.team_map.size())
+      extras.known_maps = bag::known_map_series(r.recording.team_map, r.recording.reveal_time,
+                                                r.sim_time_s, a.known_map_period_s);
+    else
+      extras.known_maps.emplace_back(r.sim_time_s, r.recording.team_map);
     bag::write_run_bag(rec, a.mcap, extras);
   }
   if (a.json) {
-    print_json(nlohmann::json::parse(exploration::to_json(r, false)));
+    print_json(with_frames(nlohmann::json::parse(exploration::to_json(r, false)), a, r));
   } else {
     const auto opt = [](const std::optional<double>& v) {
       return v ? std::to_string(*v) + " s" : std::string("not reached");
@@ -152,11 +191,15 @@ void run(const ExploreArgs& a) {
 void setup(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "explore",
-      "Explore an unknown world with a robot team (seed 004 tree or frontier baselines)");
+      "Explore an unknown world with a team of robots: reactive search, then a Voronoi tree of "
+      "the places worth visiting shared out among the robots (Lee & Joo, 'Distributed search of "
+      "swarm robots in unknown environments with a tree structure', 2018), or frontier "
+      "baselines");
   auto args = std::make_shared<ExploreArgs>();
-  cmd->add_option("--world", args->world,
-                  "Ground-truth world: ROS map .yaml, Moving AI .map, floor plan .png/.pgm, or "
-                  "'paper' (the seed 004 20x20 m world)")
+  cmd->add_option("--map,--world", args->world,
+                  "The world to explore (the robots do not know it): ROS map .yaml, Moving AI "
+                  ".map, floor plan .png/.pgm, or 'paper' (the paper's 20 m x 20 m test world); "
+                  "--world is the older name")
       ->required();
   cmd->add_option("--robots", args->robots, "Number of robots (1..64)")
       ->check(CLI::Range(1, 64))
@@ -171,14 +214,14 @@ void setup(CLI::App& app) {
       ->check(finite_range(1e-3, 1e6))
       ->capture_default_str();
   cmd->add_option("--tree-start", args->tree_start,
-                  "tree: seconds of reactive search before the first Voronoi tree")
+                  "tree: reactive search before the first Voronoi tree [s]")
       ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Random seed (start spot, random driving)")
       ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--start", args->start,
-                  "Team start X,Y in world metres (default: a seeded free spot; (2,2) for paper)");
+                  "Team start X,Y [m, map frame] (default: a seeded free spot; (2,2) for paper)");
   cmd->add_option("--stop-at", args->stop_at,
                   "Stop when the coverage reaches this fraction (default: run the full time)")
       ->check(finite_range(0.0, 1.0));
@@ -188,9 +231,15 @@ void setup(CLI::App& app) {
   cmd->add_option("--mcap", args->mcap,
                   "Write a ROS 2 bag (MCAP): /map, /known_map, /tf, /robots, /voronoi, "
                   "/robot_N/plan (docs/ros.md)");
+  cmd->add_option("--known-map-period", args->known_map_period_s,
+                  "With --mcap: publish /known_map every this many seconds of simulated time [s] "
+                  "(at most 200 maps per bag)")
+      ->check(finite_range(1e-3, 1e6))
+      ->capture_default_str();
   cmd->add_option("--picture-px", args->picture_px, "Larger side of the pictures [px]")
       ->check(CLI::Range(100, 4000))
       ->capture_default_str();
+  add_quiet_flag(cmd);
   cmd->add_flag("--json", args->json,
                 "JSON output: coverage, t90_s, t99_s (null if not reached), distance_m, "
                 "collisions, overlap, feature_points, leaves, ...");

@@ -80,6 +80,7 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--png", args->png, "Picture of the built map");
   cmd->add_flag("--json", args->json, "JSON output: agreement, observed (fractions 0..1)");
+  add_quiet_flag(cmd);
   cmd->callback([args] { run(*args); });
 }
 

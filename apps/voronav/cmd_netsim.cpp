@@ -4,13 +4,16 @@
 // metrics, as JSON with --json; --write-scenario saves a paper run as a scenario file.
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "cli_common.hpp"
@@ -227,7 +230,7 @@ nlohmann::json robots_json(const sim::NetSimMetrics& m) {
 
 /// One run with every robot its own process over Cyclone DDS (voronav/dds/netsim_dds.hpp).
 dds::DdsRunResult run_dds(const NetsimArgs& a, const sim::NetSimScenario& sc,
-                          const sim::NetSimOptions& o, int run) {
+                          const sim::NetSimOptions& o, int run, bool record) {
   namespace fs = std::filesystem;
   const fs::path dir =
       fs::temp_directory_path() / ("voronav-netsim-dds-" + std::to_string(::getpid()));
@@ -246,6 +249,7 @@ dds::DdsRunResult run_dds(const NetsimArgs& a, const sim::NetSimScenario& sc,
   d.loss = o.radio.loss;
   d.work_dir = dir.string();
   d.timeout_s = a.dds_timeout_s;
+  d.record = record;
   if (a.kill_robot >= 0) {
     d.kill_robot = static_cast<std::uint32_t>(a.kill_robot);
     d.kill_at_step = a.kill_at_step;
@@ -258,6 +262,91 @@ dds::DdsRunResult run_dds(const NetsimArgs& a, const sim::NetSimScenario& sc,
   auto r = dds::run_netsim_dds(d);
   if (!r.ok) throw Error("--transport dds", 0, "the multi-process run failed: " + r.error);
   return r;
+}
+
+std::string seconds_text(double s) {
+  std::ostringstream os;
+  os << std::fixed << std::setprecision(s < 10 ? 1 : 0) << s << " s";
+  return os.str();
+}
+
+/// The injected faults of a DDS run and what became of the source's route, in words (issue #20):
+/// e.g. "robot 5 killed at step 20 (10.0 s), declared dead at step 21; the source's route was
+/// found at 94 s after 2 Searches, 1 repair; the source arrived at 130 s".
+std::string fault_report(const NetsimArgs& a, const dds::DdsRunResult& r, double dt_s) {
+  std::vector<std::string> parts;
+  if (a.kill_robot >= 0) {
+    std::string k = "robot " + std::to_string(a.kill_robot) + " killed at step " +
+                    std::to_string(a.kill_at_step) + " (" + seconds_text(a.kill_at_step * dt_s) +
+                    ")";
+    bool declared = false;
+    for (const auto& e : r.events)
+      if (e.kind == "dead" && e.robot == a.kill_robot) {
+        k += ", noticed by the world at step " + std::to_string(e.step);
+        declared = true;
+        break;
+      }
+    if (!declared && std::find(r.dead.begin(), r.dead.end(),
+                               static_cast<std::uint32_t>(a.kill_robot)) != r.dead.end())
+      k += ", declared dead by the world process";
+    parts.push_back(k);
+  }
+  if (a.world_restart_at_step >= 0)
+    parts.push_back("the world process killed after step " +
+                    std::to_string(a.world_restart_at_step) + " and " +
+                    (r.world_restarts > 0 ? "resumed by a new one" : "not resumed"));
+  if (parts.empty()) return {};
+  std::string out;
+  for (const auto& p : parts)
+    out += (out.empty() ? "" : "; ") + p;
+  const auto& m = r.metrics;
+  if (m.route_time_s >= 0) {
+    out += "; the source's route was found at " + seconds_text(m.route_time_s) + " after " +
+           std::to_string(m.search_attempts) + " Search" + (m.search_attempts == 1 ? "" : "es");
+    if (m.repairs > 0)
+      out += ", " + std::to_string(m.repairs) + " repair" + (m.repairs == 1 ? "" : "s") + " (" +
+             std::to_string(m.repairs_executed) + " local Repair" +
+             (m.repairs_executed == 1 ? "" : "s") + " with a detour)";
+  } else {
+    out += "; the source found no route after " + std::to_string(m.search_attempts) + " Search" +
+           (m.search_attempts == 1 ? "" : "es");
+  }
+  if (m.paths_lost > 0)
+    out += " (" + std::to_string(m.paths_lost) + " Path answer" + (m.paths_lost == 1 ? "" : "s") +
+           " lost at a dead relay)";
+  out += m.arrival_time_s >= 0 ? "; the source arrived at " + seconds_text(m.arrival_time_s)
+                               : "; the source did not arrive";
+  return out;
+}
+
+nlohmann::json dds_events_json(const std::vector<dds::DdsEvent>& events) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& e : events)
+    out.push_back({{"t_s", e.t_s},
+                   {"step", e.step},
+                   {"event", e.kind},
+                   {"robot", e.robot},
+                   {"detail", e.detail}});
+  return out;
+}
+
+/// The replay/bag recording of a DDS run: what the processes recorded (trace files), plus the
+/// faults as events.
+report::Recording dds_recording(const sim::NetSimScenario& sc, const dds::DdsRunResult& r,
+                                double range_m) {
+  sim::NetSimResult res;
+  res.metrics = r.metrics;
+  res.recording = r.recording;
+  auto rec = netsim_recording(sc, res, range_m);
+  rec.title += " (one process per robot, Cyclone DDS)";
+  for (const auto& e : r.events) {
+    if (e.kind == "change") continue;  // already there from the scenario's changes
+    rec.events.push_back(
+        {e.t_s, e.kind == "killed" ? "kill" : e.kind, e.detail, static_cast<int>(e.robot)});
+  }
+  std::stable_sort(rec.events.begin(), rec.events.end(),
+                   [](const auto& x, const auto& y) { return x.t < y.t; });
+  return rec;
 }
 
 void run(const NetsimArgs& a) {
@@ -275,20 +364,39 @@ void run(const NetsimArgs& a) {
   nlohmann::json out = nlohmann::json::object();
   nlohmann::json per_run = nlohmann::json::array();
   std::map<std::string, std::vector<sim::NetSimMetrics>> by_method;
-  for (auto m : methods) {
+  // The runs the replay page (--out) and the bag (--mcap) show, of the last method.
+  const int page_run = std::min(plan.runs, 5), bag_run = std::min(plan.runs, 2);
+  std::map<int, dds::DdsRunResult> recorded;  // --transport dds: those runs, as recorded
+  for (const auto& m : methods) {
     std::vector<sim::NetSimMetrics> all;
     for (int run = 1; run <= plan.runs; ++run) {
       const auto sc = plan.scenario(run);
       sim::NetSimOptions o = plan.options;
       o.method = m;
       nlohmann::json extra = nlohmann::json::object();
+      {
+        const auto done = static_cast<double>(
+            (&m - methods.data()) * static_cast<std::ptrdiff_t>(plan.runs) + (run - 1));
+        set_progress(done / static_cast<double>(methods.size() * plan.runs),
+                     "of the runs: run " + std::to_string(run) + " of " +
+                         std::to_string(plan.runs) + " (" + std::string(sim::to_string(m)) + ")");
+      }
       if (a.transport == "dds") {
-        const auto r = run_dds(a, sc, o, run);
+        const bool record = m == methods.back() && ((!a.out.empty() && run == page_run) ||
+                                                    (!a.mcap.empty() && run == bag_run));
+        auto r = run_dds(a, sc, o, run, record);
         all.push_back(r.metrics);
         extra = {{"processes", sc.robots.size() + 1},
                  {"wall_s", r.wall_s},
                  {"dead_robots", r.dead},
-                 {"world_restarts", r.world_restarts}};
+                 {"world_restarts", r.world_restarts},
+                 {"events", dds_events_json(r.events)}};
+        if (const auto words = fault_report(a, r, o.dt_s); !words.empty()) {
+          extra["faults"] = words;
+          clear_progress_line();
+          std::cerr << "netsim: run " << run << " (" << sim::to_string(m) << "): " << words << "\n";
+        }
+        if (record) recorded[run] = std::move(r);
       } else {
         all.push_back(sim::run_netsim(sc, o).metrics);
         extra = {{"wall_s", all.back().wall_s}};
@@ -320,6 +428,10 @@ void run(const NetsimArgs& a) {
                          {"search_attempts", r.search_attempts},
                          {"repairs", r.repairs},
                          {"simulated_s", r.simulated_s},
+                         {"robot_count", sc.robots.size()},
+                         {"source", sc.source},
+                         {"source_start", pose_json({sc.robots[sc.source], 0.0})},
+                         {"destination", pose_json({sc.destination, 0.0})},
                          {"robots", robots_json(r)}});
       per_run.back().update(extra);
     }
@@ -337,32 +449,57 @@ void run(const NetsimArgs& a) {
         wall[std::string(sim::to_string(m))] / plan.runs;
     by_method[std::string(sim::to_string(m))] = all;
   }
+  auto recording_of = [&](int run) {
+    const auto sc = plan.scenario(run);
+    sim::NetSimOptions o = plan.options;
+    o.method = methods.back();
+    if (const auto it = recorded.find(run); it != recorded.end())
+      return dds_recording(sc, it->second, o.radio.range_m);
+    o.record = true;
+    return netsim_recording(sc, sim::run_netsim(sc, o), o.radio.range_m);
+  };
   if (!a.out.empty()) {
     std::filesystem::create_directories(a.out);
     std::ofstream f(std::filesystem::path(a.out) / ("netsim_" + plan.label + ".json"));
     if (!f) throw Error(a.out, 0, "cannot write the results");
-    f << nlohmann::json{{"summary", out}, {"runs", per_run}}.dump(2) << "\n";
+    f << nlohmann::json{{"frame_id", "map"}, {"summary", out}, {"runs", per_run}}.dump(2) << "\n";
     // The replay page: run 5 (the first with an obstacle change, Table 7) of the last method,
-    // run again with recording on.
-    const auto sc = plan.scenario(std::min(plan.runs, 5));
-    sim::NetSimOptions o = plan.options;
-    o.method = methods.back();
-    o.record = true;
-    report::write_replay_html(netsim_recording(sc, sim::run_netsim(sc, o), o.radio.range_m),
+    // run again with recording on (--transport dds: the recorded multi-process run itself).
+    report::write_replay_html(recording_of(page_run),
                               (std::filesystem::path(a.out) / "index.html").string());
   }
-  if (!a.mcap.empty()) {
-    // Run 2 (or 1) of the last method in process with recording on (with --transport dds too:
-    // the processes give the same figures, docs/ros.md).
-    const auto sc = plan.scenario(std::min(plan.runs, 2));
-    sim::NetSimOptions o = plan.options;
-    o.method = methods.back();
-    o.record = true;
-    bag::write_run_bag(netsim_recording(sc, sim::run_netsim(sc, o), o.radio.range_m), a.mcap);
-  }
+  // Run 2 (or 1) of the last method as a ROS 2 bag; with --transport dds what the processes
+  // recorded (poses, messages, faults), not an in-process re-run.
+  if (!a.mcap.empty()) bag::write_run_bag(recording_of(bag_run), a.mcap);
   if (!a.plots.empty()) save_plots(a.plots, plan.label, plan.title, by_method);
   if (a.json) {
-    std::cout << out.dump(2) << "\n";
+    // Frames and units as the other commands give them (docs/ros.md); the per-method summaries
+    // stay at the top level under their method names.
+    nlohmann::json j = out;
+    j["frame_id"] = "map";
+    j["units"] = {{"time", "s"},
+                  {"length", "m"},
+                  {"traffic", "bytes"},
+                  {"computation", "work units (cells + point pairs)"},
+                  {"success_rate", "fraction"}};
+    j["methods"] = nlohmann::json::array();
+    for (auto m : methods)
+      j["methods"].push_back(std::string(sim::to_string(m)));
+    j["input"] = {{"scenario", a.scenario},
+                  {"runs", plan.runs},
+                  {"seed", plan.options.seed},
+                  {"loss", plan.options.radio.loss},
+                  {"transport", a.transport},
+                  {"radio_range_m", plan.options.radio.range_m},
+                  {"sensing_range_m", plan.options.sensing_range_m},
+                  {"speed_mps", plan.options.speed_mps},
+                  {"dt_s", plan.options.dt_s}};
+    if (a.kill_robot >= 0) {
+      j["input"]["kill_robot"] = a.kill_robot;
+      j["input"]["kill_at_step"] = a.kill_at_step;
+    }
+    if (a.world_restart_at_step >= 0) j["input"]["world_restart_at_step"] = a.world_restart_at_step;
+    std::cout << j.dump(2) << "\n";
     return;
   }
   for (auto it = out.begin(); it != out.end(); ++it) {
@@ -370,49 +507,74 @@ void run(const NetsimArgs& a) {
     std::cout << it.key() << ": success " << v["success_rate"].get<double>() * 100 << " %, traffic "
               << v["traffic_bytes"].get<double>() << " B in " << v["messages"].get<double>()
               << " messages, computation " << v["computation"].get<double>() << " (max per robot "
-              << v["max_robot_computation"].get<double>() << "), route after "
-              << v["route_time_s"].get<double>() << " s, travel " << v["travel_m"].get<double>()
-              << " m\n";
+              << v["max_robot_computation"].get<double>() << "), ";
+    // route_time_s is the mean over the runs that found a route.
+    if (v["success_rate"].get<double>() > 0.0)
+      std::cout << "route after " << v["route_time_s"].get<double>() << " s";
+    else
+      std::cout << "no route found";
+    std::cout << ", travel " << v["travel_m"].get<double>() << " m\n";
   }
 }
 
 void setup(CLI::App& app) {
   auto args = std::make_shared<NetsimArgs>();
   auto* c =
-      app.add_subcommand("netsim", "Networked robots (seed 000): decentralized vs centralized");
+      app.add_subcommand("netsim",
+                         "Networked robots find a route for one of them (the source) to a "
+                         "destination, by passing Voronoi points from robot to robot "
+                         "(decentralized) or by asking every robot for its map (centralized); "
+                         "from Kim, 'Decentralized robot navigation in dynamic environments', "
+                         "M.Sc. thesis, 2010");
   c->add_option("--scenario", args->scenario,
-                "Table 6 scenario 1|2|3|4, or a scenario file (YAML, docs/formats.md; one run)");
+                "1, 2, 3 or 4: the thesis's test scenarios (1: 6 robots in 40 m x 40 m, 2: 6 "
+                "robots in 80 m x 80 m, 3: 12 robots in 40 m, 4: 12 robots in 80 m, generated "
+                "office worlds), or a scenario file (YAML, docs/formats.md; one run)");
   auto* method = c->add_option("--method", args->method,
                                "centralized|decentralized|both (default: both, or the file's)");
-  auto* runs = c->add_option("--runs", args->runs, "runs of Table 7 (1..16)");
-  c->add_option("--run", args->run, "the run of Table 7 (1..16) --write-scenario writes");
+  auto* runs = c->add_option("--runs", args->runs,
+                             "how many of the thesis's 16 runs per scenario (1..16: 4 robot "
+                             "placements, first without then with 1, 2 or 3 obstacle changes)");
+  c->add_option("--run", args->run, "the run (1..16) that --write-scenario writes");
   c->add_option("--transport", args->transport,
                 "sim (every robot in this process, simulated radio) | dds (one process per "
                 "robot plus a world process, Cyclone DDS)")
       ->capture_default_str();
   c->add_option("--kill-robot", args->kill_robot,
-                "dds: fault injection, this robot's process dies after --kill-at-step")
+                "dds: fault injection, this robot's process (id from 0) dies after "
+                "--kill-at-step; what followed is reported on stderr and in the JSON")
       ->check(non_negative());
-  c->add_option("--kill-at-step", args->kill_at_step, "dds: the step after which it dies");
+  c->add_option("--kill-at-step", args->kill_at_step,
+                "dds: the simulation step after which it dies [steps of dt_s, 0.2 s by default]");
   c->add_option("--world-restart-at-step", args->world_restart_at_step,
-                "dds: the world process dies after this step and a new one resumes the run");
+                "dds: the world process dies after this step [steps] and a new one resumes "
+                "the run");
   c->add_option("--dds-timeout", args->dds_timeout_s, "dds: limit for one run [s]")
       ->capture_default_str();
-  auto* seed = c->add_option("--seed", args->seed, "world/placement seed (a file: options.seed)")
+  auto* seed = c->add_option("--seed", args->seed,
+                             "seed of the generated worlds and robot placements (a scenario "
+                             "file: overrides its options.seed)")
                    ->check(non_negative());
-  auto* loss = c->add_option("--loss", args->loss, "radio message loss probability");
+  auto* loss =
+      c->add_option("--loss", args->loss, "probability that a radio message is lost [0..1]");
   c->add_option("--write-scenario", args->write_scenario,
                 "write --scenario 1..4 --run K (or the given file) as a scenario file naming "
                 "--method (decentralized for both) and exit")
       ->check(output_file());
-  c->add_option("--out", args->out, "directory for per-run JSON")->check(output_dir());
+  c->add_option("--out", args->out,
+                "folder for netsim_<scenario>.json (every run) and index.html (the replay page)")
+      ->check(output_dir());
   c->add_option(
       "--mcap", args->mcap,
       "Write one run as a ROS 2 bag (MCAP): /map, /plan, /tf, /robots, /messages, /events "
       "(docs/ros.md)");
-  c->add_option("--plots", args->plots, "directory for per-run bar charts (PNG)")
+  c->add_option("--plots", args->plots,
+                "folder for bar charts (PNG) of traffic, computation, CPU time and travel per run")
       ->check(output_dir());
-  c->add_flag("--json", args->json, "machine-readable output");
+  add_quiet_flag(c);
+  c->add_flag("--json", args->json,
+              "JSON output: a summary per method, every run, frame_id, units, the inputs "
+              "(docs/ros.md)");
   c->callback([args, method, runs, seed, loss] {
     args->method_given = method->count() > 0;
     args->runs_given = runs->count() > 0;

@@ -139,7 +139,11 @@ void run(const PlanArgs& a) {
 }
 
 void setup(CLI::App& app) {
-  auto* cmd = app.add_subcommand("plan", "Plan a path from start to goal on a map");
+  auto* cmd = app.add_subcommand(
+      "plan",
+      "Plan a path from start to goal on a map: A*, Dijkstra, jump point search, a path along "
+      "the topological map, or RAS (Kwak & Lim, 'Random Access Sequence path planning with "
+      "distribution density', 2006)");
   auto args = std::make_shared<PlanArgs>();
   cmd->add_option("--map", args->map,
                   "Map file: ROS map .yaml, Moving AI .map, or a floor plan .png/.pgm")

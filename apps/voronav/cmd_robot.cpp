@@ -41,6 +41,8 @@ void setup_robot(CLI::App& app) {
   c->add_option("--loss", o->loss, "Injected loss probability of receptions")
       ->check(CLI::Range(0.0, 1.0));
   c->add_option("--die-at-step", *die, "Fault injection: SIGKILL itself after this step");
+  c->add_option("--trace", o->trace_path,
+                "Append one JSON line per step here: pose and messages sent (netsim --mcap/--out)");
   add_link_options(c, o->link);
   c->callback([o, transport, die] {
     if (*transport != "dds")
@@ -61,6 +63,8 @@ void setup_world(CLI::App& app) {
   c->add_option("--scenario", o->scenario_path, "Netsim scenario file (YAML)")->required();
   c->add_flag("--resume", o->resume, "Take over a run whose world process died");
   c->add_option("--die-at-step", *die, "Fault injection: SIGKILL itself after this tick");
+  c->add_option("--trace", o->trace_path,
+                "Append one JSON line per event here: robots declared dead, obstacle changes");
   add_link_options(c, o->link);
   c->callback([o, die] {
     if (*die >= 0) o->die_at_step = static_cast<std::uint32_t>(*die);

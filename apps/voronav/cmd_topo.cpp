@@ -162,7 +162,9 @@ void run(const TopoArgs& a) {
 
 void setup(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "topo", "Topological map (seed 003): Voronoi diagram, critical points, regions, graph");
+      "topo",
+      "Topological map of a floor plan: Voronoi diagram, critical points (doorways), regions "
+      "(rooms) and their graph (Choi et al., 'Topological map building', 2002)");
   auto args = std::make_shared<TopoArgs>();
   cmd->add_option("--map", args->map, "Map file: ROS .yaml, Moving AI .map, floor plan .png/.pgm")
       ->required();

@@ -14,7 +14,7 @@ namespace voronav::cli {
 
 void add_ras_options(CLI::App* cmd, RasCliArgs& args) {
   cmd->add_option("--region-size", args.region_size,
-                  "RAS: side of a square region [cells] (seed 001, S_p)")
+                  "RAS: side of a square region [cells] (the paper's S_p)")
       ->check(CLI::Range(1, planning::kMaxRegionSize))
       ->capture_default_str();
   cmd->add_option("--density", args.density,

@@ -284,8 +284,32 @@ test("netsim (in process)", async () => {
   assert.ok(arrows.length > 0 && arrows.every((a) => a.type === 0 && a.points.length === 2));
 });
 
+test("netsim over DDS records the processes' run (robot 5 killed)", async () => {
+  // One process per robot; robot 5's dies after step 20 (t = 4 s). The bag is what the processes
+  // recorded, so the kill is in /events and robot 5 stands still from then on.
+  const out = JSON.parse(run(["netsim", "--scenario", path.join(data, "netsim/corridor.yaml"),
+    "--method", "decentralized", "--transport", "dds", "--kill-robot", "5", "--kill-at-step", "20",
+    "--json", "--mcap", "netsim_dds.mcap"]));
+  const { topics } = await readBag(path.join(work, "netsim_dds.mcap"));
+  const ev = topics["/events"].map((e) => JSON.parse(e.msg.data));
+  const kill = ev.find((e) => e.event === "kill");
+  assert.ok(kill, `a kill event: ${JSON.stringify(ev)}`);
+  near(kill.t, 4.0, 1e-9, "killed at step 20 = 4 s");
+  assert.deepEqual(out.decentralized.per_run[0].dead_robots, [5]);
+  assert.match(out.decentralized.per_run[0].faults, /^robot 5 killed at step 20/);
+  const at5 = (m) => m.msg.transforms.find((x) => x.child_frame_id === "robot_5/base_link")
+    .transform.translation;
+  const after = topics["/tf"].filter((m) => m.t >= 4.0 + 1e-9).map(at5);
+  assert.ok(after.length > 0, "/tf after the kill");
+  for (const p of after) {
+    near(p.x, after[0].x, 1e-12, "robot 5 does not move after its death");
+    near(p.y, after[0].y, 1e-12, "robot 5 does not move after its death");
+  }
+  assert.ok(topics["/messages"].flatMap((m) => m.msg.markers).length > 0, "the processes' messages");
+});
+
 test("explore", async () => {
-  const out = JSON.parse(run(["explore", "--world", "paper", "--robots", "2", "--time", "60", "--json",
+  const out = JSON.parse(run(["explore", "--map", "paper", "--robots", "2", "--time", "60", "--json",
     "--mcap", "explore.mcap"]));
   const { topics } = await readBag(path.join(work, "explore.mcap"));
   const map = topics["/map"][0].msg, known = topics["/known_map"].at(-1).msg;
@@ -294,6 +318,13 @@ test("explore", async () => {
   near(map.info.width * map.info.resolution, 20, 1e-3, "paper world is 20 m wide");
   const unknown = known.data.filter((v) => v === -1).length;
   assert.ok(unknown > 0 && unknown < known.data.length, "known map partly explored");
+  // /known_map grows during the run (every --known-map-period s), not once at the end.
+  const knownCells = topics["/known_map"].map((m) => m.msg.data.filter((v) => v !== -1).length);
+  assert.ok(knownCells.length >= 5, `several /known_map messages: ${knownCells.length}`);
+  for (let i = 1; i < knownCells.length; i++)
+    assert.ok(knownCells[i] > knownCells[i - 1], `known cells increase: ${knownCells}`);
+  assert.ok(topics["/known_map"][0].t < 10, "the first /known_map early in the run");
+  assert.equal(topics["/map"].length, 1, "the ground truth does not change");
   assert.equal(topics["/tf"][0].msg.transforms.length, 2);
   near(topics["/tf"].at(-1).t, out.sim_time_s ?? topics["/tf"].at(-1).t, 1.0, "run length");
 });

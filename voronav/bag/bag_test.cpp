@@ -506,5 +506,38 @@ TEST(RunBag, TopicsTimesAndValuesOfARecording) {
   std::filesystem::remove(file);
 }
 
+TEST(RunBag, KnownMapSeriesGrowsWithTheRevealTimes) {
+  // 2 x 2: cell 0 seen at 0 s, cells 1 and 2 at 1 s, cell 3 never; sampled every 1 s up to 3 s.
+  OccupancyGrid final_map(GridGeometry{2, 2, 1.0, {}}, kFree);
+  final_map[Cell{1, 0}] = kOccupied;
+  const std::vector<float> reveal = {0.0F, 1.0F, 1.0F, -1.0F};
+  const auto s = known_map_series(final_map, reveal, 3.0, 1.0);
+  ASSERT_EQ(s.size(), 2U);  // t = 0 (1 cell), t = 1 (3 cells); nothing new at 2 and 3
+  EXPECT_DOUBLE_EQ(s[0].first, 0.0);
+  EXPECT_DOUBLE_EQ(s[1].first, 1.0);
+  const auto known = [](const OccupancyGrid& g) {
+    int n = 0;
+    for (std::size_t i = 0; i < g.size(); ++i)
+      n += g[g.cell_at(i)] != kUnknown ? 1 : 0;
+    return n;
+  };
+  EXPECT_EQ(known(s[0].second), 1);
+  EXPECT_EQ(known(s[1].second), 3);
+  EXPECT_EQ((s[1].second[Cell{1, 0}]), kOccupied);
+  EXPECT_EQ((s[1].second[Cell{1, 1}]), kUnknown);
+  // A cell seen at 2.5 s: the last sample (at the end, 3 s) shows it.
+  const auto late = known_map_series(final_map, {0.0F, 1.0F, 1.0F, 2.5F}, 3.0, 1.0);
+  ASSERT_EQ(late.size(), 3U);
+  EXPECT_DOUBLE_EQ(late.back().first, 3.0);
+  EXPECT_EQ(known(late.back().second), 4);
+  // At most max_snapshots: the period widens to (3 - 0) / (2 - 1) = 3 s.
+  const auto two = known_map_series(final_map, {0.0F, 1.0F, 1.0F, 2.5F}, 3.0, 0.1, 2);
+  ASSERT_EQ(two.size(), 2U);
+  EXPECT_DOUBLE_EQ(two[1].first, 3.0);
+  EXPECT_THROW((void)known_map_series(final_map, {0.0F}, 3.0, 1.0), Error);
+  EXPECT_THROW((void)known_map_series(final_map, reveal, 3.0, 0.0), Error);
+  EXPECT_TRUE(known_map_series(final_map, {-1.0F, -1.0F, -1.0F, -1.0F}, 3.0, 1.0).empty());
+}
+
 }  // namespace
 }  // namespace voronav::bag

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "voronav/bag/ros_bag.hpp"
+#include "voronav/core/error.hpp"
 
 namespace voronav::bag {
 namespace {
@@ -140,6 +141,41 @@ std::string event_json(double t, const std::string& event, nlohmann::json fields
 
 std::string base_link(int robot_id) {
   return "robot_" + std::to_string(robot_id) + "/base_link";
+}
+
+std::vector<std::pair<double, OccupancyGrid>> known_map_series(
+    const OccupancyGrid& final_map, const std::vector<float>& reveal_time, double end_s,
+    double period_s, std::size_t max_snapshots) {
+  if (reveal_time.size() != final_map.size())
+    throw Error("known_map_series", 0,
+                "reveal times for " + std::to_string(reveal_time.size()) + " cells, the map has " +
+                    std::to_string(final_map.size()));
+  if (!(period_s > 0.0) || !std::isfinite(period_s))
+    throw Error("--known-map-period", 0, "expected a period > 0 s");
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < reveal_time.size(); ++i)
+    if (reveal_time[i] >= 0.0F && reveal_time[i] <= end_s) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return reveal_time[a] < reveal_time[b]; });
+  std::vector<std::pair<double, OccupancyGrid>> out;
+  if (order.empty()) return out;
+  const double first = reveal_time[order.front()];
+  if (max_snapshots >= 2 && (end_s - first) / period_s > static_cast<double>(max_snapshots - 1))
+    period_s = (end_s - first) / static_cast<double>(max_snapshots - 1);
+  OccupancyGrid map(final_map.geometry(), kUnknown);
+  std::size_t k = 0;
+  for (double t = first;; t += period_s) {
+    const bool last = t >= end_s - 1e-9;
+    if (last) t = end_s;
+    const std::size_t before = k;
+    for (; k < order.size() && reveal_time[order[k]] <= t + 1e-9; ++k) {
+      const Cell c = final_map.cell_at(order[k]);
+      map[c] = final_map[c];
+    }
+    if (k > before || (last && out.empty())) out.emplace_back(t, map);
+    if (last) break;
+  }
+  return out;
 }
 
 std::map<std::string, std::size_t> write_run_bag(const report::Recording& rec,

@@ -46,6 +46,16 @@ struct BagExtras {
 /// The robot's frame name: "robot_<id>/base_link".
 [[nodiscard]] std::string base_link(int robot_id);
 
+/// A map that grows over time, for /known_map (exploration): `final_map` with every cell unknown
+/// until `reveal_time` (one entry per cell, [s]; < 0 never known) has passed, sampled every
+/// `period_s` of simulated time from the first reveal on up to `end_s` (a snapshot only when
+/// cells were revealed since the last one; the last sample is at `end_s`). At most
+/// `max_snapshots` (the period is widened evenly). Throws voronav::Error when the sizes differ
+/// or period_s is not > 0.
+[[nodiscard]] std::vector<std::pair<double, OccupancyGrid>> known_map_series(
+    const OccupancyGrid& final_map, const std::vector<float>& reveal_time, double end_s,
+    double period_s, std::size_t max_snapshots = 200);
+
 /// Writes `rec` (+ `extras`) to `file` as MCAP; returns the message count per topic. Throws
 /// voronav::Error naming the file when it cannot be written.
 std::map<std::string, std::size_t> write_run_bag(const report::Recording& rec,

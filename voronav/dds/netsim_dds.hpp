@@ -59,6 +59,9 @@ struct RobotProcessOptions {
   double loss = 0.0;  ///< injected at this robot's transport (receptions dropped) [0, 1]
   /// Fault injection: after reporting this step the process kills itself (SIGKILL).
   std::optional<std::uint32_t> die_at_step;
+  /// When set, one JSON line per step is appended here: the pose and the messages sent
+  /// (read back by run_netsim_dds with DdsRunOptions::record).
+  std::string trace_path;
 };
 
 /// Runs one robot; returns the exit status. Prints its final report (JSON) on stdout, progress
@@ -72,11 +75,23 @@ struct WorldProcessOptions {
   bool resume = false;
   /// Fault injection: after publishing this step's Tick the process kills itself (SIGKILL).
   std::optional<std::uint32_t> die_at_step;
+  /// When set, one JSON line per event (robot declared dead, obstacle change, world restart)
+  /// is appended here.
+  std::string trace_path;
 };
 
 /// Runs the world process; returns the exit status. Prints the run's result (JSON: "metrics" as
 /// sim::NetSimMetrics, "dead", "steps", "resumed_at") on stdout.
 int run_world_process(const WorldProcessOptions& options);
+
+/// Something that happened in a multi-process run, as the processes saw it.
+struct DdsEvent {
+  double t_s = 0.0;         ///< simulated time [s]
+  std::uint32_t step = 0;   ///< lockstep step
+  std::string kind;         ///< "killed", "dead", "change", "world_killed", "world_resumed"
+  std::int64_t robot = -1;  ///< the robot concerned (-1: none)
+  std::string detail;       ///< in words
+};
 
 struct DdsRunOptions {
   std::string scenario_path;
@@ -94,6 +109,8 @@ struct DdsRunOptions {
   std::string work_dir;      ///< for the generated Cyclone config; default: the temp directory
   /// DDS domain; default derived from the process id (parallel runs do not meet).
   std::optional<std::uint32_t> domain_id;
+  /// Record what the processes did (trace files in work_dir): DdsRunResult::recording/events.
+  bool record = false;
 };
 
 struct DdsRunResult {
@@ -105,6 +122,12 @@ struct DdsRunResult {
   double wall_s = 0.0;
   std::string error;  ///< why not ok
   std::vector<ChildResult> children;
+  /// With DdsRunOptions::record: every robot's pose per step, the messages each sent, the
+  /// source's final route (as sim::NetSimOptions::record gives in process).
+  sim::Recording recording;
+  /// Faults and obstacle changes in step order (with record; "killed" is always there when
+  /// a robot kill was injected).
+  std::vector<DdsEvent> events;
 };
 
 /// Launches the world and one process per robot of the scenario and collects the result. Never

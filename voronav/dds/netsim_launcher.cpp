@@ -21,6 +21,7 @@
 #include "voronav/dds/dds_transport.hpp"
 #include "voronav/dds/internal/lockstep_control.hpp"
 #include "voronav/dds/internal/netsim_json.hpp"
+#include "voronav/dds/internal/netsim_trace.hpp"
 #include "voronav/sim/robot_agent.hpp"
 #include "voronav/sim/scenario_file.hpp"
 
@@ -60,6 +61,27 @@ DdsRunResult run_netsim_dds(const DdsRunOptions& o) {
       fs::remove(p, ec);
     }
   } remove{config};
+  // Trace files (DdsRunOptions::record), removed after they are read.
+  const std::string world_trace =
+      o.record ? (dir / ("voronav-trace-" + tag + "-world.jsonl")).string() : "";
+  std::vector<std::string> robot_traces;
+  if (o.record)
+    for (std::uint32_t i = 0; i < n; ++i)
+      robot_traces.push_back(
+          (dir / ("voronav-trace-" + tag + "-robot" + std::to_string(i) + ".jsonl")).string());
+  struct RemoveAll {
+    std::vector<std::string> files;
+    ~RemoveAll() {
+      std::error_code ec;
+      for (const auto& f : files)
+        fs::remove(f, ec);
+    }
+  } remove_traces{robot_traces};
+  if (o.record) remove_traces.files.push_back(world_trace);
+  for (const auto& f : remove_traces.files) {
+    std::error_code ec;
+    fs::remove(f, ec);  // appended to: start empty
+  }
   const std::uint32_t domain =
       o.domain_id.value_or(1 + static_cast<std::uint32_t>(::getpid()) % 200);
   const std::string partition = "netsim-" + tag;
@@ -87,6 +109,10 @@ DdsRunResult run_netsim_dds(const DdsRunOptions& o) {
   auto world_args = [&](bool resume) {
     auto a = common({"netsim-world"});
     if (resume) a.push_back("--resume");
+    if (o.record) {
+      a.push_back("--trace");
+      a.push_back(world_trace);
+    }
     if (!resume && o.world_restart_at_step) {
       a.push_back("--die-at-step");
       a.push_back(std::to_string(*o.world_restart_at_step));
@@ -99,6 +125,10 @@ DdsRunResult run_netsim_dds(const DdsRunOptions& o) {
     if (o.loss > 0.0) {
       a.push_back("--loss");
       a.push_back(std::to_string(o.loss));
+    }
+    if (o.record) {
+      a.push_back("--trace");
+      a.push_back(robot_traces[i]);
     }
     if (o.kill_robot && *o.kill_robot == i) {
       a.push_back("--die-at-step");
@@ -139,6 +169,20 @@ DdsRunResult run_netsim_dds(const DdsRunOptions& o) {
     return res;
   }
   res.ok = true;
+  const auto& scenario = file.scenario;
+  if (o.record) read_netsim_traces(robot_traces, world_trace, scenario, res.recording, res.events);
+  if (o.kill_robot)
+    for (const auto& c : res.children)
+      if (c.name == "robot " + std::to_string(*o.kill_robot) &&
+          c.status == ChildStatus::kSignaled && c.signal == SIGKILL)
+        res.events.push_back({o.kill_at_step * file.options.dt_s, o.kill_at_step, "killed",
+                              static_cast<std::int64_t>(*o.kill_robot),
+                              "robot " + std::to_string(*o.kill_robot) + " killed at step " +
+                                  std::to_string(o.kill_at_step) + " (fault injection)"});
+  std::stable_sort(res.events.begin(), res.events.end(), [](const DdsEvent& a, const DdsEvent& b) {
+    // a kill before the world notices it
+    return a.step != b.step ? a.step < b.step : (a.kind == "killed") > (b.kind == "killed");
+  });
   for (std::size_t i = 0; i < res.children.size(); ++i) {
     if (i == world) continue;
     const auto& c = res.children[i];

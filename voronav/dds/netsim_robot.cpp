@@ -21,6 +21,7 @@
 #include "voronav/dds/dds_transport.hpp"
 #include "voronav/dds/internal/lockstep_control.hpp"
 #include "voronav/dds/internal/netsim_json.hpp"
+#include "voronav/dds/internal/netsim_trace.hpp"
 #include "voronav/sim/robot_agent.hpp"
 #include "voronav/sim/scenario_file.hpp"
 
@@ -120,7 +121,11 @@ int run_robot_process(const RobotProcessOptions& o) {
   ControlLink link(static_cast<dds_entity_t>(dds.participant_handle()), o.link.partition, false);
   LockstepTransport net(dds);
   BinaryGrid truth = binarize(sc.world);
-  sim::AgentContext ctx{&sc, &opts, &truth, nullptr};
+  TraceFile trace(o.trace_path);
+  if (!o.trace_path.empty() && !trace.on())
+    throw Error(o.trace_path, 0, "cannot write the trace file");
+  std::vector<sim::RecordedMessage> sent;  // since the last trace line
+  sim::AgentContext ctx{&sc, &opts, &truth, trace.on() ? &sent : nullptr};
   sim::RobotAgent agent(ctx, network::RobotId{o.id}, sc.robots[o.id], net);
   const std::string who = "voronav-robot " + std::to_string(o.id);
 
@@ -176,6 +181,8 @@ int run_robot_process(const RobotProcessOptions& o) {
     }
     if (tick->step == 0) {
       agent.start();
+      trace.robot_step(0, 0.0, agent.position(), sent);
+      sent.clear();
       started = true;
       report(kDone, 0);
       continue;
@@ -217,12 +224,15 @@ int run_robot_process(const RobotProcessOptions& o) {
       rep.changes_applied = c + 1;
       agent.world_changed(now, box.lo, box.hi);
     }
+    trace.robot_step(step, now, agent.position(), sent);
+    sent.clear();
     report(kDone, step);
     if (o.die_at_step && *o.die_at_step == step) {
       std::cerr << who << ": killing itself after step " << step << " (fault injection)\n";
       die_now();
     }
   }
+  if (o.id == sc.source) trace.robot_route(agent.route());
   const auto a = agent.report();
   json j = agent_report_json(a);
   j["id"] = o.id;

@@ -21,6 +21,7 @@
 #include "voronav/dds/dds_transport.hpp"
 #include "voronav/dds/internal/lockstep_control.hpp"
 #include "voronav/dds/internal/netsim_json.hpp"
+#include "voronav/dds/internal/netsim_trace.hpp"
 #include "voronav/sim/robot_agent.hpp"
 #include "voronav/sim/scenario_file.hpp"
 
@@ -66,6 +67,9 @@ int run_world_process(const WorldProcessOptions& o) {
   std::map<std::uint32_t, ReportMsg> last;  // newest report per robot
   std::vector<std::uint8_t> alive(n, 1);
   std::vector<std::uint32_t> dead;
+  TraceFile trace(o.trace_path);
+  std::uint32_t step = 0;     // the last step every live robot completed
+  std::uint32_t waiting = 0;  // the step whose reports the world waits for
   auto collect = [&](double timeout_s, const std::function<bool()>& enough) {
     const double deadline = steady_s() + timeout_s;
     for (;;) {
@@ -85,19 +89,19 @@ int run_world_process(const WorldProcessOptions& o) {
       link.wait(0.02);
     }
   };
-  auto has = [&](std::uint32_t j, std::uint8_t kind, std::uint32_t step) {
+  auto has = [&](std::uint32_t j, std::uint8_t kind, std::uint32_t at_step) {
     auto it = last.find(j);
     if (it == last.end()) return false;
     if (it->second.kind == kFinal || it->second.kind == kFailedReport) return kind <= kFinal;
-    return it->second.kind >= kind && it->second.step >= step;
+    return it->second.kind >= kind && it->second.step >= at_step;
   };
   auto declare_dead = [&](std::uint32_t j, const std::string& why) {
     if (!alive[j]) return;
     alive[j] = 0;
     dead.push_back(j);
     std::cerr << "voronav-world: robot " << j << " declared dead (" << why << ")\n";
+    trace.event({waiting * opts.dt_s, waiting, "dead", j, "declared dead by the world: " + why});
   };
-  std::uint32_t step = 0;  // the last step every live robot completed
   std::uint32_t resumed_at = 0;
   if (!o.resume) {
     const bool ok = collect(o.link.startup_timeout_s, [&] {
@@ -148,12 +152,15 @@ int run_world_process(const WorldProcessOptions& o) {
     step = behind ? top - 1 : top;
     resumed_at = step;
     std::cerr << "voronav-world: resuming after step " << step << "\n";
+    trace.event({step * opts.dt_s, step, "world_resumed", -1,
+                 "a new world process resumed the run after step " + std::to_string(step)});
   }
   const int steps = static_cast<int>(std::ceil(opts.time_limit_s / opts.dt_s));
   const auto source = static_cast<std::uint32_t>(sc.source);
   auto source_arrived = [&] { return last.count(source) && last[source].arrived; };
   while (static_cast<int>(step) < steps && alive[source] && !source_arrived()) {
     const std::uint32_t k = step + 1;
+    waiting = k;
     TickMsg t;
     t.step = k;
     t.alive = alive;
@@ -167,11 +174,18 @@ int run_world_process(const WorldProcessOptions& o) {
       applied = std::max(applied, r.changes_applied);
     }
     t.first_route_s = last[source].route_time_s;
-    for (std::size_t c : sim::changes_due(sc, t.first_route_s, k * opts.dt_s, applied))
+    for (std::size_t c : sim::changes_due(sc, t.first_route_s, k * opts.dt_s, applied)) {
       t.changes.push_back(static_cast<std::uint32_t>(c));
+      trace.event({k * opts.dt_s, k, "change", -1,
+                   "obstacle change " + std::to_string(c) + " (" +
+                       std::to_string(sc.changes[c].cells.size()) + " cells " +
+                       (sc.changes[c].value == kOccupied ? "blocked" : "freed") + ")"});
+    }
     link.write(t);
     if (o.die_at_step && *o.die_at_step == k) {
       link.flush(1.0);
+      trace.event({k * opts.dt_s, k, "world_killed", -1,
+                   "the world process was killed after step " + std::to_string(k)});
       std::cerr << "voronav-world: killing itself after tick " << k << " (fault injection)\n";
       die_now();
     }
@@ -184,7 +198,7 @@ int run_world_process(const WorldProcessOptions& o) {
       for (std::uint32_t j = 0; j < n; ++j)
         if (alive[j] && !has(j, kDone, k))
           declare_dead(j, "no report of step " + std::to_string(k) + " within " +
-                              std::to_string(o.link.step_timeout_s) + " s");
+                              std::to_string(static_cast<int>(o.link.step_timeout_s)) + " s");
     step = k;
     if (std::count(alive.begin(), alive.end(), 1) == 0) {
       std::cerr << "voronav-world: no robot left\n";

@@ -822,6 +822,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         f.poses.push_back(ap->body.true_pose());
       f.coverage = coverage_now();
       last_coverage = f.coverage;
+      if (o.on_frame) o.on_frame(f.t, f.coverage);
       {
         const auto l = team.log_odds().data();
         auto& rt = result.recording.reveal_time;

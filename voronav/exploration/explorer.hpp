@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -84,6 +85,9 @@ struct ExplorationOptions {
   FeaturePointOptions features;
   VoronoiTreeOptions tree;
   FrontierOptions frontier;
+  /// Called after each recorded frame with the simulated time [s] and the coverage (0..1), e.g.
+  /// for a progress line; empty: nothing.
+  std::function<void(double t_s, double coverage)> on_frame;
 
   void validate() const;
 };
