@@ -94,7 +94,10 @@ struct SippGaOptions {
   double elitism = 0.2;  ///< the best fraction survives unchanged
   int three_opt = 4;     ///< 3-opt segment moves tried per child (first improvement)
   int max_generations = 50;
-  double time_limit_s = 1.5;  ///< stop starting generations after this wall-clock time
+  /// CPU-time budget [s]; 0 = auto: auto_seconds_per_robot per robot, clamped to
+  /// [auto_min_s, auto_max_s] (K = 100: 1 s, so that the whole command stays under 2 s CPU).
+  double time_limit_s = 0.0;
+  double auto_seconds_per_robot = 0.01, auto_min_s = 0.2, auto_max_s = 2.0;
 };
 
 /// PBS budgets (pbs.hpp; declared here so that the coordinate options carry them).
@@ -104,8 +107,8 @@ struct PbsBudget {
 };
 
 struct SippCoordinateOptions {
-  CollisionMapOptions map;  ///< at-start / at-goal, node spacing for the (M,D) network
-  OrderRule order = OrderRule::kEdf;
+  CollisionMapOptions map;           ///< at-start / at-goal, node spacing for the (M,D) network
+  OrderRule order = OrderRule::kGa;  ///< the GA seeded with EDF and the other rules (docs)
   Objective objective = Objective::kMakespan;  ///< used by kBest and PBS (ties: the other one)
   PrioritizedOptions planning;
   /// When prioritized planning fails in every order (after its restarts), run PBS.
