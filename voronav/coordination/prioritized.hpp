@@ -4,15 +4,16 @@
 // incomplete: a robot can fail because a higher-priority robot parks on its only way, passes its
 // start before it can leave, or crosses its goal after it would arrive. The fallback here is the
 // classic restart rule: the robot that failed moves to the top of the order and every robot is
-// planned again, at most max_restarts times (each restart is reported). PBS (Ma et al. 2019) is
-// not implemented; see docs/coordination.md. Before that, each robot first tries to keep off the
-// starts (with --at-start wait) and goals (with --at-goal stay) of the robots not planned yet, as
-// stationary discs, and plans without them only when that fails (the same rule as the fixed-path
+// planned again, at most max_restarts times (each restart is reported); PBS (Ma et al. 2019,
+// pbs.hpp) is the fallback when every order fails. Before that, each robot first tries to keep off
+// the starts (with --at-start wait) and goals (with --at-goal stay) of the robots not planned yet,
+// as stationary discs, and plans without them only when that fails (the same rule as the fixed-path
 // planner of seed 002's scenario, scenario.hpp); `soft_fallbacks` counts those robots.
 //
-// coordinate_sipp(): the priority order comes from the paper's machinery (seed 002): the (M,D)
-// network of the robots' fixed paths and its Bottom-level EDF order (section 4.1), or the index
-// order; then prioritized SIPP; then the same continuous-time checker as the delay schedules.
+// coordinate_sipp(): the priority order comes from the paper's machinery (seed 002): by default
+// its GA over orders (sipp_ga.hpp) seeded with the Bottom-level EDF order of the (M,D) network of
+// the robots' fixed paths (section 4.1) and the other order rules; then prioritized SIPP; then the
+// same continuous-time checker as the delay schedules.
 #pragma once
 
 #include <cstdint>
