@@ -7,12 +7,12 @@ For each map, K and presence convention, runs `voronav coordinate --method delay
 printed by --method sipp), the time the command reports, validity and what produced the result
 (restarts, fallback tiers, order rule). Writes a Markdown table.
 
-The SIPP priority orders compared are --sipp-orders (default edf, longest-first, deps and pbs:
-priority-based search). Besides the time the command reports, the CPU time of the process is
+The SIPP priority orders compared are --sipp-orders (default: `default`, i.e. no --order: the GA
+over orders with its auto CPU budget; edf, longest-first, deps and pbs: priority-based search). Besides the time the command reports, the CPU time of the process is
 recorded (the machine is shared: wall time is inflated when it is loaded).
 
 Usage: coordination_sipp.py VORONAV OUT.md [--ks 10,30,60,100,200] [--timeout 60]
-       [--delays-search edf] [--maps a,b,c] [--sipp-orders edf,longest-first,deps,pbs]
+       [--delays-search edf] [--maps a,b,c] [--sipp-orders default,edf,longest-first,deps,pbs]
 """
 import argparse
 import json
@@ -62,7 +62,7 @@ def main():
     ap.add_argument("--timeout", type=float, default=60.0)
     ap.add_argument("--delays-search", default="edf")
     ap.add_argument("--maps", default=",".join(MAPS))
-    ap.add_argument("--sipp-orders", default="edf,longest-first,deps,pbs")
+    ap.add_argument("--sipp-orders", default="default,edf,longest-first,deps,pbs")
     a = ap.parse_args()
     rows = []
     for name in a.maps.split(","):
@@ -75,8 +75,9 @@ def main():
                 runs = []
                 for order in a.sipp_orders.split(","):
                     extra = ["--pbs-time-limit", str(0.8 * a.timeout)] if order == "pbs" else []
-                    r, wall = run(a.binary, [*base, *conv, "--method", "sipp", "--order", order,
-                                             *extra], a.timeout)
+                    chosen = [] if order == "default" else ["--order", order]
+                    r, wall = run(a.binary, [*base, *conv, "--method", "sipp", *chosen, *extra],
+                                  a.timeout)
                     runs.append(("sipp/" + order, r, wall))
                 dl, dl_wall = run(a.binary, [*base, *conv, "--method", "delays", "--search",
                                              a.delays_search], a.timeout)
@@ -112,7 +113,11 @@ def main():
                                               if r.get("ga_improved_over_seeds")
                                               else "a seed order is the best"))
                         elif "restarts" in r:
-                            row["note"] = (f"restarts {r.get('restarts')}, tier fallbacks "
+                            row["note"] = ((f"GA: no order without restarts in "
+                                            f"{r.get('ga_evaluations')} planned; then "
+                                            f"{r.get('order_source')} with ")
+                                           if r.get("ga_evaluations") else "")
+                            row["note"] += (f"restarts {r.get('restarts')}, tier fallbacks "
                                            f"{r.get('soft_fallbacks')}")
                         else:
                             row["note"] = f"repairs {r.get('repairs')}"

@@ -129,6 +129,10 @@ def case_sipp_mapf():
     out = json.loads(run("coordinate", *ga, "--order", "ga", "--sipp-ga-time-limit", "0.3").stdout)
     check(out["valid"] and out["order_source"] == "ga" and out["ga_evaluations"] >= 5,
           str(out)[:400])
+    # The default order is the GA over orders, seeded with EDF and the other rules.
+    out = json.loads(run("coordinate", *common, *ws).stdout)
+    check(out["valid"] and out["order_source"] == "ga" and out["ga_evaluations"] >= 1,
+          str(out)[:400])
     p = run("coordinate", *common, "--order", "magic", expect=2)
     check("pbs" in p.stderr and "ga" in p.stderr, p.stderr)
     with tempfile.TemporaryDirectory() as d:

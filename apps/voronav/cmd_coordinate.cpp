@@ -34,13 +34,13 @@ struct CoordArgs {
   std::string search = "ga";
   std::string method = "delays";
   int max_restarts = -1;
-  std::string order = "edf";
+  std::string order = "ga";
   bool cross_goals = false;
   std::string objective = "makespan";
   bool no_pbs_fallback = false;
   double pbs_time_limit = 60.0;
   std::size_t pbs_max_nodes = 20000;
-  double sipp_ga_time_limit = 1.5;
+  double sipp_ga_time_limit = 0.0;
   std::string at_start, at_goal;
   std::uint64_t seed = 1;
   int ga_three_opt = 0;
@@ -209,7 +209,8 @@ void write_schedules(const co::Scenario& sc, co::Schedule s, const std::filesyst
   co::write_schedule(dir / "schedule.yaml", s);
 }
 
-/// --method sipp: prioritized SIPP in the EDF (or index) order, checked in continuous time.
+/// --method sipp: prioritized SIPP in a priority order (--order; default the GA over orders),
+/// checked in continuous time.
 void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::Agent>& agents,
               const co::CollisionMapOptions& mo) {
   if (!sc.map) throw Error("--method", 0, "sipp plans on a grid: the scenario needs a map");
@@ -461,9 +462,10 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option(
          "--order", a->order,
-         "sipp: priority order edf | index | shortest-first | longest-first | deps | best | "
-         "pbs (best: all orders, keep the best by --objective; pbs: priority-based "
-         "search, Ma et al. 2019)")
+         "sipp: priority order ga | edf | index | shortest-first | longest-first | deps | best | "
+         "pbs (ga, the default: the paper's GA over orders seeded with EDF and the other rules, "
+         "CPU budget --sipp-ga-time-limit; best: all orders, keep the best by --objective; pbs: "
+         "priority-based search, Ma et al. 2019)")
       ->capture_default_str();
   cmd->add_flag("--cross-goals", a->cross_goals,
                 "sipp: do not try to keep off the goals of robots planned later first");
@@ -475,8 +477,9 @@ void setup(CLI::App& app) {
       ->check(positive())
       ->capture_default_str();
   cmd->add_option("--sipp-ga-time-limit", a->sipp_ga_time_limit,
-                  "sipp --order ga: wall-clock budget of the GA over SIPP orders [s]")
-      ->check(positive())
+                  "sipp --order ga: CPU-time budget of the GA over SIPP orders [s] (0 = auto: "
+                  "0.01 s per robot, within [0.2, 2])")
+      ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--pbs-max-nodes", a->pbs_max_nodes, "sipp: PBS high-level node budget")
       ->check(CLI::PositiveNumber)

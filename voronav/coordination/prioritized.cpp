@@ -218,6 +218,7 @@ SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vec
                                                      : std::pair{r.sum_of_arrivals, r.makespan};
   };
   bool have = false;
+  bool ga_fallback = false;
   if (options.order == OrderRule::kGa) {
     // The paper's GA over SIPP orders, seeded with every order rule (sipp_ga.hpp).
     std::vector<std::vector<int>> seeds;
@@ -234,7 +235,12 @@ SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vec
       have = true;
       candidates.clear();
     }
-    // Else no order works without restarts: the rules below, with their restarts, then PBS.
+    // Else no order the GA planned works without restarts (K = 200 wait/stay): the rules with
+    // their restarts, the dependency order first (the cheapest that succeeds there: restarts
+    // are seconds each at that size), stopping at the first that succeeds; then PBS.
+    ga_fallback = !have;
+    std::stable_partition(candidates.begin(), candidates.end(),
+                          [](const auto& c) { return c.first == OrderRule::kDependencies; });
   }
   for (const auto& [rule, order] : candidates) {
     PrioritizedResult r = plan_prioritized(blocked, robots, order, po);
@@ -243,6 +249,7 @@ SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vec
       out.order_source = to_string(rule);
       have = true;
     }
+    if (ga_fallback && out.plan.ok) break;
   }
   const bool pbs_first = options.order == OrderRule::kPbs;
   if (pbs_first || (!out.plan.ok && options.pbs_fallback)) {

@@ -4,15 +4,16 @@
 // incomplete: a robot can fail because a higher-priority robot parks on its only way, passes its
 // start before it can leave, or crosses its goal after it would arrive. The fallback here is the
 // classic restart rule: the robot that failed moves to the top of the order and every robot is
-// planned again, at most max_restarts times (each restart is reported). PBS (Ma et al. 2019) is
-// not implemented; see docs/coordination.md. Before that, each robot first tries to keep off the
-// starts (with --at-start wait) and goals (with --at-goal stay) of the robots not planned yet, as
-// stationary discs, and plans without them only when that fails (the same rule as the fixed-path
+// planned again, at most max_restarts times (each restart is reported); PBS (Ma et al. 2019,
+// pbs.hpp) is the fallback when every order fails. Before that, each robot first tries to keep off
+// the starts (with --at-start wait) and goals (with --at-goal stay) of the robots not planned yet,
+// as stationary discs, and plans without them only when that fails (the same rule as the fixed-path
 // planner of seed 002's scenario, scenario.hpp); `soft_fallbacks` counts those robots.
 //
-// coordinate_sipp(): the priority order comes from the paper's machinery (seed 002): the (M,D)
-// network of the robots' fixed paths and its Bottom-level EDF order (section 4.1), or the index
-// order; then prioritized SIPP; then the same continuous-time checker as the delay schedules.
+// coordinate_sipp(): the priority order comes from the paper's machinery (seed 002): by default
+// its GA over orders (sipp_ga.hpp) seeded with the Bottom-level EDF order of the (M,D) network of
+// the robots' fixed paths (section 4.1) and the other order rules; then prioritized SIPP; then the
+// same continuous-time checker as the delay schedules.
 #pragma once
 
 #include <cstdint>
@@ -94,7 +95,10 @@ struct SippGaOptions {
   double elitism = 0.2;  ///< the best fraction survives unchanged
   int three_opt = 4;     ///< 3-opt segment moves tried per child (first improvement)
   int max_generations = 50;
-  double time_limit_s = 1.5;  ///< stop starting generations after this wall-clock time
+  /// CPU-time budget [s]; 0 = auto: auto_seconds_per_robot per robot, clamped to
+  /// [auto_min_s, auto_max_s] (K = 100: 1 s, so that the whole command stays under 2 s CPU).
+  double time_limit_s = 0.0;
+  double auto_seconds_per_robot = 0.01, auto_min_s = 0.2, auto_max_s = 2.0;
 };
 
 /// PBS budgets (pbs.hpp; declared here so that the coordinate options carry them).
@@ -104,8 +108,8 @@ struct PbsBudget {
 };
 
 struct SippCoordinateOptions {
-  CollisionMapOptions map;  ///< at-start / at-goal, node spacing for the (M,D) network
-  OrderRule order = OrderRule::kEdf;
+  CollisionMapOptions map;           ///< at-start / at-goal, node spacing for the (M,D) network
+  OrderRule order = OrderRule::kGa;  ///< the GA seeded with EDF and the other rules (docs)
   Objective objective = Objective::kMakespan;  ///< used by kBest and PBS (ties: the other one)
   PrioritizedOptions planning;
   /// When prioritized planning fails in every order (after its restarts), run PBS.

@@ -9,8 +9,9 @@
 //    reconnection by the largest M + D needs the (M,D) network, which SIPP does not use;
 //  - one evaluation is a full prioritized planning run (milliseconds to a second), so the
 //    population, the children per generation and the 3-opt moves per child are small options
-//    and the search stops at a wall-clock budget; the seeds (EDF and the other order rules) are
-//    in the initial population, so the result is never worse than the best seed.
+//    and the search stops at a CPU-time budget (sipp_ga_budget()); the seeds (EDF and the other
+//    order rules) are in the initial population, so the result is never worse than the best seed
+//    planned (the first seed, EDF, is always planned; the others only while the budget lasts).
 #pragma once
 
 #include <utility>
@@ -27,6 +28,10 @@ struct SippGaResult {
   std::size_t evaluations = 0;
   int improved_over_seeds = 0;  ///< 1 when the GA found an order better than every seed
 };
+
+/// The GA's CPU budget [s]: options.time_limit_s when > 0, else auto_seconds_per_robot per robot
+/// clamped to [auto_min_s, auto_max_s].
+[[nodiscard]] double sipp_ga_budget(const SippGaOptions& options, std::size_t robots);
 
 /// `seeds`: initial orders (each a permutation of the robot indices).
 [[nodiscard]] SippGaResult sipp_genetic_search(const BinaryGrid& blocked,

@@ -1,5 +1,6 @@
-// GA over SIPP orders (issue #21): never worse than its seeds, deterministic for a seed, and its
-// plans pass the continuous-time checker.
+// GA over SIPP orders (issue #21): never worse than its seeds, deterministic for a seed, its
+// plans pass the continuous-time checker; the first seed is planned whatever the budget; the auto
+// budget.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -54,6 +55,27 @@ TEST(SippGa, NeverWorseThanItsSeedsAndDeterministic) {
   }
   EXPECT_TRUE(verify_trajectories(tr, radii).valid);
   EXPECT_THROW((void)sipp_genetic_search(g, robots, {{0, 1}}, Objective::kMakespan, po, o), Error);
+
+  // A budget spent before the first evaluation: the first seed (EDF in coordinate_sipp) is still
+  // planned, and nothing else (no second seed, no generation).
+  SippGaOptions tiny;
+  tiny.time_limit_s = 1e-12;
+  std::vector<int> reversed(seed.rbegin(), seed.rend());
+  const SippGaResult t =
+      sipp_genetic_search(g, robots, {seed, reversed}, Objective::kSumOfArrivals, po, tiny);
+  EXPECT_EQ(t.evaluations, 1U);
+  EXPECT_EQ(t.generations, 0);
+  EXPECT_EQ(t.order, seed);
+  EXPECT_EQ(t.best.sum_of_arrivals, seeded.sum_of_arrivals);
+}
+
+TEST(SippGa, AutoBudgetScalesWithTheRobots) {
+  SippGaOptions o;  // time_limit_s = 0: auto, 0.01 s per robot within [0.2, 2]
+  EXPECT_DOUBLE_EQ(sipp_ga_budget(o, 100), 1.0);
+  EXPECT_DOUBLE_EQ(sipp_ga_budget(o, 5), 0.2);
+  EXPECT_DOUBLE_EQ(sipp_ga_budget(o, 1000), 2.0);
+  o.time_limit_s = 3.0;
+  EXPECT_DOUBLE_EQ(sipp_ga_budget(o, 100), 3.0);
 }
 
 }  // namespace
