@@ -73,8 +73,9 @@ out = ["# Exploration: seed 004's Voronoi tree vs frontier baselines (multi-seed
        "knows. Stalled = robots idle > 60 s (within 0.5 m) while coverage < 99 %. Methods: tree = "
        "seed 004 (400 s reactive search, one tree dispatch, then reactive search); tree+replan = "
        "the same with `--tree-replan robots` (ours); frontier = nearest frontier; coordinated = "
-       "Burgard 2005; tree-frontier = ours (60 s reactive, one dispatch to leaves facing unknown "
-       "space, then coordinated frontiers).", ""]
+       "Burgard 2005; tree-frontier = ours (Burgard's allocation from t = 0 over the frontiers "
+       "plus the Voronoi-tree leaves facing unknown space, every target ranked by its information "
+       "gain).", ""]
 try:
     import matplotlib
     matplotlib.use("Agg")

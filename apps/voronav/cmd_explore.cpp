@@ -25,6 +25,7 @@ struct ExploreArgs {
   std::string method = "tree";
   double time = 600.0;
   double tree_start = 400.0;
+  double min_leaf_gain = 0.15;
   std::string tree_replan = "none";
   std::uint64_t seed = 1;
   std::string start;
@@ -130,6 +131,7 @@ void run(const ExploreArgs& a) {
   o.robots = a.robots;
   o.time_limit = a.time;
   o.tree_start_time = a.tree_start;
+  o.min_leaf_gain = a.min_leaf_gain;
   o.tree_replan = exploration::parse_tree_replan(a.tree_replan);
   o.seed = a.seed;
   o.stop_at_coverage = a.stop_at;
@@ -216,6 +218,11 @@ void setup(CLI::App& app) {
   cmd->add_option("--tree-start", args->tree_start,
                   "tree: reactive search before the first Voronoi tree [s]")
       ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--min-leaf-gain", args->min_leaf_gain,
+                  "tree-frontier, --tree-replan robots: a leaf is a goal only when at least this "
+                  "fraction of the cells within 3 m of it is unknown (1 = leaves never qualify)")
+      ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Random seed (start spot, random driving)")
       ->check(non_negative())

@@ -43,7 +43,7 @@ struct Agent {
   bool on_tree = false;                // following a leg of a tree dispatch
   std::deque<std::vector<Vec2>> legs;  // tree legs still to drive, each ending at a leaf
   bool tree_done = false;              // its dispatched leaves are done (or given up)
-  bool use_frontier = false;           // kTreeFrontier: in the frontier phase
+  bool goal_leaf = false;              // kTreeFrontier: the goal is a tree leaf
   double retry_at = 0.0;               // [s] TreeReplan::kFromRobots: next attempt
   Vec2 anchor;                         // stall watch: where it has stayed since anchor_t
   double anchor_t = 0.0;
@@ -193,6 +193,7 @@ void ExplorationOptions::validate() const {
     throw Error("ExplorationOptions.min_leaf_gain", 0, "expected 0..1");
   if (!(hybrid_tree_start_time >= 0.0) || !std::isfinite(hybrid_tree_start_time))
     throw Error("ExplorationOptions.hybrid_tree_start_time", 0, "expected a finite number >= 0");
+  positive(hybrid_tree_period, "hybrid_tree_period");
   if (!(tree_start_time >= 0.0) || !std::isfinite(tree_start_time))
     throw Error("ExplorationOptions.tree_start_time", 0, "expected a finite number >= 0");
   if (!(clearance >= 0.0)) throw Error("ExplorationOptions.clearance", 0, "expected >= 0");
@@ -396,10 +397,6 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     a.tree_done = true;
     a.mode = AgentMode::kReactive;  // the paper: search reactively again
     a.route.clear();
-    if (hybrid) {
-      a.use_frontier = true;
-      next_replan = t;
-    }
     a.retry_at = t;
   };
   const auto finish_leg = [&](Agent& a, double t) {
@@ -441,20 +438,14 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
 
   // The single dispatch (figure 9): the tree of all feature points on the team map where only
   // known obstacles block, rooted at the vertex nearest the start; leaves by distance, robot i
-  // takes leaves i, i + N, ...; the route runs from the root down the common trunk (kTree) or
-  // joins the root-to-leaf chain at its node nearest the robot (kTreeFrontier).
+  // takes leaves i, i + N, ...; the route runs from the root down the common trunk.
   const auto dispatch_first = [&](double t) {
     const OccupancyGrid tg = team_grid(team);
     const BinaryGrid opt = tree_grid(tg, plan_radius);
     const PointVoronoi vor = voronoi_of_points(features.positions());
     VoronoiTree tree = build_voronoi_tree(vor, opt, centre, o.tree);
     ++result.trees;
-    std::vector<int> leaves = tree.leaves_by_distance();
-    if (hybrid)
-      std::erase_if(leaves, [&](int l) {
-        return unknown_fraction(tg, tree.nodes[static_cast<std::size_t>(l)].position) <
-               o.min_leaf_gain;
-      });
+    const std::vector<int> leaves = tree.leaves_by_distance();
     if (tree.empty() || leaves.empty()) return false;
     std::vector<std::vector<int>> dispatch = dispatch_leaves(leaves, o.robots);
     const Vec2 root = tree.nodes[static_cast<std::size_t>(tree.root)].position;
@@ -462,21 +453,9 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     for (std::size_t i = 0; i < agents.size(); ++i) {
       Agent& a = *agents[i];
       const Vec2 pos = a.body.true_pose().position;
-      if (hybrid && i >= leaves.size()) dispatch[i].clear();  // no leaf of its own
-      if (hybrid && dispatch[i].size() > 1) dispatch[i].resize(1);
       a.legs.clear();
       std::vector<Vec2> full{pos}, goals;
       int at = tree.root;
-      if (hybrid && !dispatch[i].empty()) {
-        double best = std::numeric_limits<double>::infinity();
-        for (int n : tree.node_route(tree.root, dispatch[i].front())) {
-          const double d = distance(pos, tree.nodes[static_cast<std::size_t>(n)].position);
-          if (d < best) {
-            best = d;
-            at = n;
-          }
-        }
-      }
       for (std::size_t k = 0; k < dispatch[i].size(); ++k) {
         const int leaf = dispatch[i][k];
         std::vector<Vec2> leg;
@@ -501,7 +480,6 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       a.tree_done = false;
       a.reactive_until = 0.0;
       if (a.legs.empty()) {
-        if (hybrid) a.use_frontier = true;
         a.tree_done = true;
         continue;
       }
@@ -583,27 +561,78 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     }
   };
 
+  // kTreeFrontier (ours): the current tree's leaves, rebuilt every hybrid_tree_period from all
+  // feature points on the team map (only known obstacles block), rooted at the team's start.
+  std::vector<Vec2> leaf_goals;
+  const auto rebuild_hybrid_tree = [&](double t) {
+    const BinaryGrid opt = tree_grid(team_grid(team), plan_radius);
+    VoronoiTree tree =
+        build_voronoi_tree(voronoi_of_points(features.positions()), opt, centre, o.tree);
+    ++result.trees;
+    leaf_goals.clear();
+    for (int l : tree.leaves_by_distance())
+      leaf_goals.push_back(tree.nodes[static_cast<std::size_t>(l)].position);
+    if (result.recording.tree_time < 0.0 && !tree.empty()) {
+      result.leaves = static_cast<int>(leaf_goals.size());
+      result.recording.tree = std::move(tree);
+      result.recording.tree_time = t;
+    }
+  };
+
+  // Frontier allocation (kFrontier, kCoordinated). kTreeFrontier adds the tree's leaves that
+  // look into unknown space as candidate targets (costs on the grid where only known obstacles
+  // block) and ranks every target by its information gain (the unknown fraction around it).
+  planning::BfsFlood flood_opt;
   const auto replan_frontiers = [&] {
     std::vector<std::size_t> active;
     for (std::size_t i = 0; i < agents.size(); ++i)
-      if (!hybrid || agents[i]->use_frontier) active.push_back(i);
-    if (active.empty()) return;
+      active.push_back(i);
     const OccupancyGrid tg = team_grid(team);
     trav = traversable_of(tg, plan_radius);
-    const std::vector<Frontier> fr = find_frontiers(tg, trav, o.frontier);
+    std::vector<Frontier> fr = find_frontiers(tg, trav, o.frontier);
+    const std::size_t n_frontiers = fr.size();
+    std::vector<double> gains;
+    BinaryGrid opt;
+    if (hybrid) {
+      for (const Frontier& f : fr)
+        gains.push_back(unknown_fraction(tg, g.cell_center(f.target)));
+      opt = tree_grid(tg, plan_radius);
+      for (const Vec2& l : leaf_goals) {
+        const double gain = unknown_fraction(tg, l);
+        if (gain < o.min_leaf_gain) continue;
+        const auto c = nearest_free(opt, l, 2);
+        if (!c) continue;
+        Frontier leaf;
+        leaf.centroid = l;
+        leaf.target = *c;
+        fr.push_back(std::move(leaf));
+        gains.push_back(gain);
+      }
+    }
     std::vector<std::vector<double>> costs(active.size(), std::vector<double>(fr.size(), -1.0));
     std::vector<std::vector<std::vector<Vec2>>> paths(active.size());
     for (std::size_t r = 0; r < active.size(); ++r) {
       Agent& a = *agents[active[r]];
-      const auto from = nearest_free(trav, a.body.true_pose().position);
-      if (!from || flood.flood(trav, *from, planning::Connectivity::k8) == 0) continue;
-      for (std::size_t f = 0; f < fr.size(); ++f) {
-        const Vec2 tp = g.cell_center(fr[f].target);
-        bool banned = false;
+      const Vec2 pos = a.body.true_pose().position;
+      const auto banned = [&](Vec2 tp) {
         for (const Vec2& b : a.blacklist)
-          banned = banned || distance(b, tp) < 0.5;
+          if (distance(b, tp) < 0.5) return true;
+        return false;
+      };
+      if (fr.size() > n_frontiers) {
+        const auto from = nearest_free(opt, pos);
+        if (from && flood_opt.flood(opt, *from, planning::Connectivity::k8) > 0)
+          for (std::size_t f = n_frontiers; f < fr.size(); ++f) {
+            const std::int32_t s = flood_opt.steps(opt, fr[f].target);
+            if (s >= 0 && !banned(fr[f].centroid)) costs[r][f] = s * g.resolution;
+          }
+      }
+      const auto from = nearest_free(trav, pos);
+      if (!from || flood.flood(trav, *from, planning::Connectivity::k8) == 0) continue;
+      for (std::size_t f = 0; f < n_frontiers; ++f) {
+        const Vec2 tp = g.cell_center(fr[f].target);
         const std::int32_t s = flood.steps(trav, fr[f].target);
-        if (!banned && s >= 0) costs[r][f] = s * g.resolution;
+        if (!banned(tp) && s >= 0) costs[r][f] = s * g.resolution;
       }
       // Paths only for the frontiers this robot might take are made below (same flood reused).
       paths[r].resize(fr.size());
@@ -617,7 +646,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     }
     std::vector<int> choice = o.method == ExplorationMethod::kFrontier
                                   ? assign_nearest(fr, costs, o.frontier)
-                                  : assign_coordinated(fr, costs, o.frontier);
+                                  : assign_coordinated(fr, costs, o.frontier, gains);
     for (std::size_t r = 0; r < active.size(); ++r) {
       Agent& a = *agents[active[r]];
       if (choice[r] < 0) {
@@ -626,8 +655,24 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         continue;
       }
       const auto k = static_cast<std::size_t>(choice[r]);
+      if (k >= n_frontiers) {
+        // A tree leaf: the route runs through unknown space, so it is planned afresh from where
+        // the robot is at every allocation (a route the map has since blocked is replaced).
+        const bool same = a.goal_leaf && a.goal && distance(*a.goal, fr[k].centroid) < 0.5;
+        std::vector<Vec2> path = path_on(opt, a.body.true_pose().position, fr[k].centroid);
+        if (path.empty()) continue;
+        if (!same) ++result.leaf_goals;
+        a.goal = fr[k].centroid;
+        a.goal_leaf = true;
+        const double keep_progress = a.since_progress;
+        start_follow(a, std::move(path));
+        if (same) a.since_progress = keep_progress;
+        continue;
+      }
       const Vec2 tp = g.cell_center(fr[k].target);
-      if (a.goal && distance(*a.goal, tp) < 0.5 && a.mode == AgentMode::kFollow) continue;
+      if (a.goal && !a.goal_leaf && distance(*a.goal, tp) < 0.5 && a.mode == AgentMode::kFollow)
+        continue;
+      a.goal_leaf = false;
       std::vector<Vec2> path = paths[r][k];
       if (path.empty()) {
         const auto from = nearest_free(trav, a.body.true_pose().position);
@@ -669,14 +714,19 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       }
     }
     // Decide.
-    if (tree_method) {
+    if (hybrid) {
+      if (t >= next_tree_time) {
+        rebuild_hybrid_tree(t);
+        next_tree_time = t + o.hybrid_tree_period;
+      }
+      if (t >= next_replan) {
+        replan_frontiers();
+        next_replan = t + o.replan_period;
+      }
+    } else if (tree_method) {
       if (!dispatched && t >= next_tree_time) {
         if (dispatch_first(t)) {
           dispatched = true;
-        } else if (hybrid && t >= tree_start + 30.0) {
-          dispatched = true;  // no tree worth following: all robots go to frontiers
-          for (auto& ap : agents)
-            ap->use_frontier = true;
         } else {
           next_tree_time = t + 30.0;  // too few feature points yet: try again later
         }
@@ -685,14 +735,10 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         check_tree_routes(t);
         next_check = t + o.replan_period;
       }
-      if (dispatched && !hybrid && o.tree_replan == TreeReplan::kFromRobots)
+      if (dispatched && o.tree_replan == TreeReplan::kFromRobots)
         for (std::size_t i = 0; i < agents.size(); ++i)
           if (agents[i]->tree_done && !agents[i]->on_tree && t >= agents[i]->retry_at)
             replan_from_robot(i, t);
-      if (dispatched && hybrid && t >= next_replan) {
-        replan_frontiers();
-        next_replan = t + o.replan_period;
-      }
     } else if (t >= next_replan) {
       replan_frontiers();
       next_replan = t + o.replan_period;
@@ -715,7 +761,13 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           a.since_progress = 0.0;
         }
         if (a.next >= a.route.size()) {
+          if (a.goal_leaf && a.goal) {
+            // A leaf is visited once: reached (or its route ended short of it) it is done.
+            if (distance(pose.position, *a.goal) < 2.0 * o.goal_tolerance) ++result.leaves_reached;
+            a.blacklist.push_back(*a.goal);
+          }
           a.goal.reset();
+          a.goal_leaf = false;
           if (a.on_tree) {
             finish_leg(a, t);
           } else {
@@ -866,7 +918,8 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"overlap\":" << num(r.overlap) << ",\"feature_points\":" << r.feature_points
      << ",\"leaves\":" << r.leaves << ",\"trees\":" << r.trees << ",\"dispatches\":" << r.dispatches
      << ",\"leaves_reached\":" << r.leaves_reached << ",\"frontier_goals\":" << r.frontier_goals
-     << ",\"stalled_robots\":" << r.stalled_robots << ",\"watchdog_events\":" << r.watchdog_events
+     << ",\"leaf_goals\":" << r.leaf_goals << ",\"stalled_robots\":" << r.stalled_robots
+     << ",\"watchdog_events\":" << r.watchdog_events
      << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;
   if (include_recording) {

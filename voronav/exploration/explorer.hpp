@@ -10,9 +10,11 @@
 //    where it is, never back at the start;
 //  * kFrontier: nearest frontier per robot (Yamauchi; ROS explore_lite);
 //  * kCoordinated: Burgard et al. 2005 utility - cost assignment;
-//  * kTreeFrontier (ours): a short reactive phase, one tree dispatch to the leaves that still
-//    look into unknown space (each robot joins the trunk where it is nearest), then Burgard's
-//    coordinated frontiers for every robot that reached (or gave up) its leaf.
+//  * kTreeFrontier (ours): Burgard's coordinated allocation from the start, where the candidate
+//    targets are the frontiers plus the leaves of seed 004's Voronoi tree that look into unknown
+//    space (the tree is rebuilt every hybrid_tree_period from the feature points collected so
+//    far; routes to a leaf may cross unknown space) and every target is ranked by its
+//    information gain (the unknown fraction within gain_radius) instead of Burgard's utility 1.
 // Everything is seeded: the same options give the same result. The recording (poses per frame,
 // feature points, tree, routes) is a plain struct written as JSON for replay viewers.
 #pragma once
@@ -63,8 +65,9 @@ struct ExplorationOptions {
   double record_period = 1.0;      ///< a frame is recorded this often [s]
   double tree_start_time = 400.0;  ///< [s] reactive search before the first tree (seed 004)
   TreeReplan tree_replan = TreeReplan::kNone;  ///< kTree only (see TreeReplan)
-  /// [s] kTreeFrontier: reactive search (feature collection) before its single tree dispatch.
-  double hybrid_tree_start_time = 60.0;
+  /// [s] kTreeFrontier: its first tree (feature points are collected from the start).
+  double hybrid_tree_start_time = 10.0;
+  double hybrid_tree_period = 10.0;  ///< [s] kTreeFrontier: the tree is rebuilt this often
   /// A leaf "looks into unknown space" when at least this fraction of the cells within
   /// gain_radius of it is unknown in the team map (kTreeFrontier, kFromRobots).
   double min_leaf_gain = 0.15;
@@ -139,8 +142,9 @@ struct ExplorationResult {
   int leaves = 0;          ///< leaves of the first tree (kTree)
   int trees = 0;           ///< trees built (first dispatch and re-plans)
   int dispatches = 0;      ///< robot dispatches along a tree (first + re-plans)
-  int leaves_reached = 0;  ///< dispatched leaves a robot actually reached
+  int leaves_reached = 0;  ///< dispatched (kTree) or allocated (kTreeFrontier) leaves reached
   int frontier_goals = 0;  ///< frontier goals assigned (frontier methods, kTreeFrontier)
+  int leaf_goals = 0;      ///< tree leaves assigned as goals by the allocation (kTreeFrontier)
   /// Robots that stayed within stall_distance of one spot for stall_time while coverage < 0.99.
   int stalled_robots = 0;
   /// Goals given up by the progress watchdog (no progress for stall_time / 3).

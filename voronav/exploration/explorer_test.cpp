@@ -63,6 +63,22 @@ TEST(Explorer, FrontierBaselinesCoverTheWorld) {
   }
 }
 
+TEST(Explorer, TreeFrontierAllocatesTreeLeavesAndCoversTheWorld) {
+  // Ours: coordinated allocation over frontiers + Voronoi-tree leaves from the start; the tree is
+  // rebuilt from the feature points and some of its leaves are taken as goals.
+  ExplorationOptions o = quick(ExplorationMethod::kTreeFrontier, 4, 400);
+  o.stop_at_coverage = 0.95;
+  const ExplorationResult r = run_exploration(world(), o);
+  EXPECT_EQ(r.collisions, 0);
+  EXPECT_GT(r.coverage, 0.95);
+  EXPECT_GE(r.trees, 1);
+  EXPECT_GT(r.feature_points, 10);
+  EXPECT_GT(r.leaf_goals, 0);
+  EXPECT_GT(r.frontier_goals, 0);
+  EXPECT_EQ(r.dispatches, 0);  // no figure-9 dispatch in this method
+  EXPECT_EQ(r.stalled_robots, 0);
+}
+
 TEST(Explorer, DeterministicForAGivenSeed) {
   ExplorationOptions o = quick(ExplorationMethod::kTree, 2, 120);
   o.start.reset();  // seeded start spot

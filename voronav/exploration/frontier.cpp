@@ -101,8 +101,12 @@ std::vector<int> assign_nearest(std::span<const Frontier> frontiers,
 
 std::vector<int> assign_coordinated(std::span<const Frontier> frontiers,
                                     const std::vector<std::vector<double>>& costs,
-                                    const FrontierOptions& options) {
+                                    const FrontierOptions& options, std::span<const double> gains) {
   const std::size_t nr = costs.size(), nf = frontiers.size();
+  if (!gains.empty() && gains.size() != nf)
+    throw Error("assign_coordinated", 0,
+                "expected one gain per frontier (" + std::to_string(nf) + "), got " +
+                    std::to_string(gains.size()));
   std::vector<int> out(nr, -1);
   if (nf == 0) return out;
   double max_cost = 0.0;
@@ -111,6 +115,13 @@ std::vector<int> assign_coordinated(std::span<const Frontier> frontiers,
       max_cost = std::max(max_cost, c);
   if (max_cost <= 0.0) max_cost = 1.0;
   std::vector<double> utility(nf, 1.0);
+  if (!gains.empty()) {
+    double most = 0.0;
+    for (double v : gains)
+      most = std::max(most, v);
+    for (std::size_t f = 0; f < nf; ++f)
+      utility[f] = most > 0.0 ? std::max(0.0, gains[f]) / most : 1.0;
+  }
   std::vector<char> done(nr, 0);
   for (std::size_t round = 0; round < nr; ++round) {
     double best = -std::numeric_limits<double>::infinity();

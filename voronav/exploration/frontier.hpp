@@ -48,8 +48,11 @@ struct Frontier {
                                               const FrontierOptions& options = {});
 /// Coordinated assignment (Burgard 2005). Robots that get nothing (more robots than targets)
 /// get the best target anyway, after utility reduction; -1 when none is reachable.
+/// `gains` (optional, one per frontier, >= 0): information-gain ranking (ours, used by
+/// tree-frontier): a target's initial utility is its gain / the largest gain instead of 1.
 [[nodiscard]] std::vector<int> assign_coordinated(std::span<const Frontier> frontiers,
                                                   const std::vector<std::vector<double>>& costs,
-                                                  const FrontierOptions& options = {});
+                                                  const FrontierOptions& options = {},
+                                                  std::span<const double> gains = {});
 
 }  // namespace voronav::exploration

@@ -78,5 +78,17 @@ TEST(Frontier, CoordinatedSpreadsTheRobots) {
   EXPECT_THROW(bad.validate(), Error);
 }
 
+TEST(Frontier, InformationGainRanksTheCoordinatedAllocation) {
+  // One robot, costs 2 and 6 m (normalised by 6). Burgard's utility 1: 1 - 2/6 > 1 - 6/6, so the
+  // near frontier. With gains 0.1 and 0.9 (utilities 1/9 and 1): 1/9 - 1/3 < 1 - 1, the far one.
+  const auto fr = at({{0, 0}, {10, 0}});
+  const std::vector<std::vector<double>> costs{{2.0, 6.0}};
+  EXPECT_EQ(assign_coordinated(fr, costs), (std::vector<int>{0}));
+  const std::vector<double> gains{0.1, 0.9};
+  EXPECT_EQ(assign_coordinated(fr, costs, {}, gains), (std::vector<int>{1}));
+  const std::vector<double> wrong{0.5};
+  EXPECT_THROW((void)assign_coordinated(fr, costs, {}, wrong), Error);
+}
+
 }  // namespace
 }  // namespace voronav::exploration
