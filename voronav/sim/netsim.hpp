@@ -97,7 +97,7 @@ struct NetSimOptions {
   bool keep_bridge_on_new_search = false;
   /// The source's start point (its own position, a pseudo open point) may join the source's own
   /// open points by a straight move its map knows is free, as own points join each other.
-  bool source_straight_start = false;
+  bool source_straight_start = true;
   /// Ignored (kept so older scenario files load): the hand-off rule is now always the one rule
   /// of decentralized_search.cpp (a neighbour > 1 m closer than the sender's nearest sent point
   /// takes the Search on), which cannot deadlock (issue #13).
