@@ -132,7 +132,7 @@ bool RobotAgent::try_continue() {
     if (i < r.s_na && j < r.s_na) return false;
     if (i >= trail_begin && j >= trail_begin && (i + 1 == j || j + 1 == i)) return true;
     const Vec2 a = r.s_comb[i].position, b = r.s_comb[j].position;
-    if (distance(a, b) > 6.0) return false;
+    if ((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) > 36.0) return false;  // > 6 m
     los_cells += static_cast<std::size_t>(distance(a, b) / scen().world.resolution()) + 1;
     return segment_known_free(a, b);
   };
