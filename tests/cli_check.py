@@ -224,6 +224,10 @@ def case_demo():
         check(summary["exploration"]["coverage"] >= 0.9, "the paper's tree explores >= 90 %: " +
               str(summary["exploration"]))
         check(summary["networked"]["success"] is True, str(summary["networked"]))
+        # The obstacle change lies on the route while the source drives it, and a local Repair
+        # (Tables 4-5) handles it.
+        check(summary["networked"]["changes_on_route"] >= 1 and
+              summary["networked"]["repairs_executed"] >= 1, str(summary["networked"]))
         dds = summary["networked_dds"]
         check(dds["ok"] and dds["same_as_in_process"], f"the DDS run equals the in-process one: {dds}")
         check(summary["exploration"]["collisions"] == 0, str(summary["exploration"]))

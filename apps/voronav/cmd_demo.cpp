@@ -360,26 +360,49 @@ struct Demo {
       std::uniform_int_distribution<std::size_t> pick(0, pool.size() - 1);
       sc.robots.push_back(truth_map.geometry().cell_center(pool[pick(rng)]));
     }
-    // The obstacle change: 10 s after the source has its route, a 1.5 m block appears on the
-    // shortest path halfway to the destination.
-    planning::AStarPlanner astar;
-    const auto shortest = astar.plan(grid, source, destination);
-    if (shortest.ok()) {
-      const Cell mid = shortest.path[shortest.path.size() / 2];
-      const int half = static_cast<int>(std::lround(0.75 / truth_map.resolution()));
-      sim::ObstacleChange change;
-      change.after_route_s = 10.0;
-      for (int dy = -half; dy <= half; ++dy)
-        for (int dx = -half; dx <= half; ++dx) {
-          const Cell c{mid.x + dx, mid.y + dy};
-          if (truth_map.contains(c) && truth_map[c] == kFree) change.cells.push_back(c);
-        }
-      sc.changes.push_back(std::move(change));
-    }
     sim::NetSimOptions o;
     o.method = sim::Method::kDecentralized;
     o.seed = args.seed;
     o.record = true;
+    // The obstacle change (issue 13: on the route while the source drives it): the same run
+    // without it shows where the source drives its route; a 1.5 m block appears on that route
+    // halfway along it, when the source is 5 m before it (the destination stays reachable).
+    const auto probe = sim::run_netsim(sc, o);
+    const auto& geo = truth_map.geometry();
+    std::vector<double> t, along;
+    std::vector<Vec2> pos;
+    for (const auto& st : probe.recording.steps) {
+      if (st.t_s + 1e-9 < probe.metrics.route_time_s || probe.metrics.route_time_s < 0.0) continue;
+      const Vec2 q = st.positions[sc.source];
+      along.push_back(pos.empty() ? 0.0 : along.back() + distance(pos.back(), q));
+      pos.push_back(q);
+      t.push_back(st.t_s);
+    }
+    const int half = static_cast<int>(std::lround(0.75 / truth_map.resolution()));
+    for (std::size_t i = 0; i < pos.size() && !pos.empty(); ++i) {
+      if (along[i] < std::max(8.0, 0.5 * along.back()) || distance(pos[i], sc.destination) < 4.0)
+        continue;
+      std::size_t j = 0;
+      while (j < i && along[j] < along[i] - 5.0)
+        ++j;
+      const auto mid = geo.world_to_cell(pos[i]), at = geo.world_to_cell(pos[j]);
+      if (!mid || !at) continue;
+      sim::ObstacleChange change;
+      change.at_s = t[j];
+      BinaryGrid trial = truth;
+      for (int dy = -half; dy <= half; ++dy)
+        for (int dx = -half; dx <= half; ++dx) {
+          const Cell c{mid->x + dx, mid->y + dy};
+          if (truth_map.contains(c) && truth_map[c] == kFree) {
+            change.cells.push_back(c);
+            trial[c] = 1;
+          }
+        }
+      const BinaryGrid pg = planning::make_planning_grid(trial, 0.3);
+      if (pg[*at] || !planning::AStarPlanner().plan(pg, *at, destination).ok()) continue;
+      sc.changes.push_back(std::move(change));
+      break;
+    }
     const auto res = sim::run_netsim(sc, o);
     const auto& m = res.metrics;
     report::write_replay_html(netsim_recording(sc, res, o.radio.range_m),
@@ -395,6 +418,9 @@ struct Demo {
                             {"traffic_bytes", m.traffic_bytes},
                             {"messages", m.messages},
                             {"repairs", m.repairs},
+                            {"repairs_executed", m.repairs_executed},
+                            {"changes_on_route", m.changes_on_route},
+                            {"route_found_by", std::string(sim::to_string(m.route_found_by))},
                             {"travel_m", m.travel_m},
                             {"page", "netsim.html"}};
     // The same run with every robot its own process over Cyclone DDS (issue #8): lockstep, so

@@ -174,7 +174,8 @@ int run_world_process(const WorldProcessOptions& o) {
       applied = std::max(applied, r.changes_applied);
     }
     t.first_route_s = last[source].route_time_s;
-    for (std::size_t c : sim::changes_due(sc, t.first_route_s, k * opts.dt_s, applied)) {
+    for (std::size_t c :
+         sim::changes_due(sc, t.first_route_s, k * opts.dt_s, applied, opts.method)) {
       t.changes.push_back(static_cast<std::uint32_t>(c));
       trace.event({k * opts.dt_s, k, "change", -1,
                    "obstacle change " + std::to_string(c) + " (" +
@@ -237,7 +238,7 @@ int run_world_process(const WorldProcessOptions& o) {
   m.simulated_s = step * opts.dt_s;
   m.changes_applied =
       static_cast<int>(sim::changes_due(sc, last.count(source) ? last[source].route_time_s : -1.0,
-                                        step * opts.dt_s, 0)
+                                        step * opts.dt_s, 0, opts.method)
                            .size());
   m.wall_s = steady_s() - wall0;
   std::sort(dead.begin(), dead.end());

@@ -148,7 +148,10 @@ bool continues(const VoronoiPoint& p, const VoronoiPoint& q, double r) {
   const double a = static_cast<double>(p.clearance) - r;
   const double b = static_cast<double>(q.clearance) - r;
   if (a <= 0.0 || b <= 0.0) return false;
-  return distance(p.position, q.position) <= a + b;
+  // Squared distances: this test runs for every pair of points of a search (the hot loop of
+  // large runs); hypot was most of the time on 100 robots (docs/reproductions/networked.md).
+  const double dx = p.position.x - q.position.x, dy = p.position.y - q.position.y;
+  return dx * dx + dy * dy <= (a + b) * (a + b);
 }
 
 PointSearch search_points(std::span<const VoronoiPoint> points, std::span<const double> start_cost,

@@ -250,6 +250,36 @@ void RobotAgent::finish_route(const PathMessage& p, bool own_answer) {
   }
   std::vector<Vec2> prefix;  // the way to the join point (ends at it)
   if (join == w.size()) {
+    // Back along its own trail (driven, so known free) only as far as needed: to the trail point
+    // from which a route point is a straight known-free move (<= 6 m), leaving the shortest way.
+    double back = 0.0;
+    Vec2 prev = s.pos, checked{kInf, kInf};
+    std::size_t tk = trail_.size(), tj = w.size();
+    double tbest = kInf;
+    for (std::size_t k = trail_.size(); k-- > 0;) {
+      back += distance(prev, trail_[k]);
+      prev = trail_[k];
+      if (back >= tbest) break;
+      if (k > 0 && distance(checked, trail_[k]) < 0.5) continue;
+      checked = trail_[k];
+      for (std::size_t j = 0; j < w.size(); ++j) {
+        const double d = distance(trail_[k], w[j].position);
+        if (d > 6.0 || back + d + rest[j] >= tbest) continue;
+        if (d < 1e-6 || segment_known_free(trail_[k], w[j].position)) {
+          tbest = back + d + rest[j];
+          tk = k;
+          tj = j;
+        }
+      }
+    }
+    if (tj < w.size()) {
+      for (std::size_t k = trail_.size(); k-- > tk;)
+        prefix.push_back(trail_[k]);
+      prefix.push_back(w[tj].position);
+      join = tj;
+    }
+  }
+  if (join == w.size()) {
     for (std::size_t j = 0; j < w.size(); ++j) {
       const double c = distance(s.pos, w[j].position) + rest[j];
       if (c < best) {
@@ -266,9 +296,14 @@ void RobotAgent::finish_route(const PathMessage& p, bool own_answer) {
       join = 0;
       prefix.push_back(w[0].position);
     }
-  } else {
+  } else if (prefix.empty()) {
     prefix = {w[join].position};
   }
+  NS_DEBUG(
+      "t=%.1f source at (%.1f,%.1f) joins route point %zu of %zu at (%.1f,%.1f), prefix %zu, route "
+      "from (%.1f,%.1f)\n",
+      now_, s.pos.x, s.pos.y, join, w.size(), w[join].position.x, w[join].position.y, prefix.size(),
+      w[0].position.x, w[0].position.y);
   route_.assign(1, VoronoiPoint{s.pos, 1.0f, 0.0f});
   route_.insert(route_.end(), w.begin() + static_cast<std::ptrdiff_t>(join), w.end());
   route_owners_.assign(1, s.id);

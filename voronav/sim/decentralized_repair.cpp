@@ -157,6 +157,8 @@ void RobotAgent::on(const Header& h, const RepairMessage& m) {
   if (!r.repairs_seen.insert(m.num).second) return;
   if (m.broken_to >= m.whole_path.size()) return;
   auto fixed = detour(m.whole_path, m.broken_from, m.broken_to);
+  NS_DEBUG("t=%.1f robot %u repair from %u: detour %zu\n", now_, r.id.value, h.sender.value,
+           fixed.size());
   if (!fixed.empty()) {
     ++report_.repairs_executed;
     PathMessage p;
@@ -199,6 +201,17 @@ void RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole) {
   if (whole.empty() || route_.empty()) return;
   auto& s = r_;
   const std::size_t done = next_route_index();
+  if (distance(whole.front().position, s.pos) < 1e-3) {
+    // The answer to the source's own Repair: it starts where the source stands (it waits there
+    // while blocked) and replaces the rest of the route.
+    route_.erase(route_.begin() + static_cast<std::ptrdiff_t>(std::min(done, route_.size())),
+                 route_.end());
+    route_.insert(route_.end(), whole.begin() + 1, whole.end());
+    set_source_waypoints(std::min(done, route_.size()));
+    blocked_since_ = -1.0;
+    NS_DEBUG("t=%.1f source splices a repaired route (%zu points)\n", now_, whole.size());
+    return;
+  }
   for (std::size_t i = route_.size(); i-- > 0;) {
     if (distance(route_[i].position, whole.front().position) < 1e-3) {
       if (i + 1 < done) break;  // already passed: the splice point is behind the source
@@ -220,7 +233,10 @@ void RobotAgent::check_source_route() {
   if (s.wp < back_steps_) {
     // Still on a planned way to the route (its own map): check what it drives, plan again if
     // that is blocked.
-    if (walk_blocked() && !replan_to_route()) blocked_since_ = now_;
+    if (walk_blocked() && !replan_to_route()) {
+      NS_DEBUG("t=%.1f source way to the route blocked at (%.1f,%.1f)\n", now_, s.pos.x, s.pos.y);
+      blocked_since_ = now_;
+    }
     return;
   }
   // Only the part within sensing range matters; find_break checks the remaining route.
@@ -237,6 +253,7 @@ void RobotAgent::check_source_route() {
   ++report_.repairs;
   shrink_to_map(rest);  // as in check_relay_route
   auto fixed = detour(rest, br->first, br->second);
+  NS_DEBUG("t=%.1f source own detour %zu\n", now_, fixed.size());
   if (!fixed.empty()) {
     ++report_.repairs_executed;
     route_.erase(route_.begin() + static_cast<std::ptrdiff_t>(std::min(next, route_.size())),

@@ -51,6 +51,7 @@ void RobotAgent::start_search() {
                       opt().search_timeout_per_m * distance(s.pos, scen().destination));
   trail_ = {s.pos};
   const std::uint32_t num = ++search_num_;
+  NS_DEBUG("t=%.1f source starts search %u at (%.1f,%.1f)\n", now_, num, s.pos.x, s.pos.y);
   SearchMessage pseudo;
   pseudo.source = s.id;
   pseudo.num = num;
@@ -68,6 +69,7 @@ void RobotAgent::start_search() {
 /// centralized source does) while it keeps waiting for Path answers.
 void RobotAgent::retry_search() {
   auto& s = r_;
+  NS_DEBUG("t=%.1f source retries search at (%.1f,%.1f)\n", now_, s.pos.x, s.pos.y);
   ++report_.search_attempts;
   search_deadline_ =
       now_ + std::max(opt().search_timeout_s,
@@ -130,7 +132,7 @@ bool RobotAgent::try_continue() {
     if (i < r.s_na && j < r.s_na) return false;
     if (i >= trail_begin && j >= trail_begin && (i + 1 == j || j + 1 == i)) return true;
     const Vec2 a = r.s_comb[i].position, b = r.s_comb[j].position;
-    if (distance(a, b) > 6.0) return false;
+    if ((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) > 36.0) return false;  // > 6 m
     los_cells += static_cast<std::size_t>(distance(a, b) / scen().world.resolution()) + 1;
     return segment_known_free(a, b);
   };
@@ -213,6 +215,39 @@ void RobotAgent::consider_bridge(const SearchMessage& m) {
   NS_DEBUG("t=%.1f robot %u cannot continue (d %.1f, ref %.1f, bridge %d)\n", now_, r.id.value,
            distance(r.pos, scen().destination), nearest_to(m.open_points, scen().destination),
            r.bridge_at >= 0.0 ? 1 : 0);
+}
+
+/// The source walks toward the destination only while no radio neighbour can take its Search
+/// on (it is alone, or every neighbour is behind it): each metre it looks again; when the
+/// hand-off rule names a neighbour it has not handed the Search to yet, it stops and sends the
+/// same Search (same Num) from where it stands, and waits for the relays' Path. Returns true
+/// when it stopped (or answered itself, having sensed a way to the destination).
+bool RobotAgent::source_walk_check() {
+  auto& s = r_;
+  s.s_in.open_points = {start_point(s.map, s.pos, opt().robot_radius_m)};
+  s.s_senders = {{s.id, s.pos, {}, 0, 1}};
+  if (!try_continue()) return false;
+  if (dest_reached()) {
+    s.walk = Walk::kIdle;
+    s.waypoints.clear();
+    answer_path();
+    return true;
+  }
+  const double ref = reference_distance();
+  for (const auto& n : transport_.nearby(s.id)) {
+    if (n.id == s.id || contains(handed_to_, n.id) || !hands_off_to(n.position, ref, 0.0)) continue;
+    NS_DEBUG("t=%.1f source stops at (%.1f,%.1f): robot %u takes the search on\n", now_, s.pos.x,
+             s.pos.y, n.id.value);
+    for (const auto& m : transport_.nearby(s.id))
+      if (hands_off_to(m.position, ref, 0.0)) handed_to_.push_back(m.id);
+    s.walk = Walk::kIdle;
+    s.waypoints.clear();
+    s.wp = 0;
+    s.s_done = true;
+    forward_search(0);
+    return true;
+  }
+  return false;
 }
 
 // ---- Table 2: a relay -------------------------------------------------------------------------
@@ -325,7 +360,10 @@ void RobotAgent::after_continue(std::uint8_t hops) {
   const double ref = reference_distance();
   bool frontier = true;
   for (const auto& n : transport_.nearby(r.id))
-    if (n.id != source_id() && hands_off_to(n.position, ref, 0.0)) frontier = false;
+    if (n.id != source_id() && hands_off_to(n.position, ref, 0.0)) {
+      frontier = false;
+      if (is_source() && !contains(handed_to_, n.id)) handed_to_.push_back(n.id);
+    }
   // The source also walks toward the destination itself from its second attempt on (as the
   // centralized source does), while it keeps waiting for answers.
   const bool source_walks =

@@ -42,8 +42,9 @@ void NetSimScenario::validate() const {
   for (const auto& ch : changes) {
     if (!(ch.after_route_s >= 0.0) || !std::isfinite(ch.after_route_s))
       throw Error("scenario.changes", 0, "after_route_s must be a finite number >= 0");
-    if (!std::isfinite(ch.at_s))
-      throw Error("scenario.changes", 0, "at_s must be a finite number (< 0: unused)");
+    if (!std::isfinite(ch.at_s) || !std::isfinite(ch.centralized_at_s))
+      throw Error("scenario.changes", 0,
+                  "at_s and centralized_at_s must be finite numbers (< 0: unused)");
     for (Cell c : ch.cells)
       if (!world.contains(c)) throw Error("scenario.changes", 0, "change cell outside the map");
   }
@@ -110,12 +111,14 @@ ChangeBox apply_change(BinaryGrid& truth, const ObstacleChange& change) {
 }
 
 std::vector<std::size_t> changes_due(const NetSimScenario& scenario, double first_route_s,
-                                     double now_s, std::size_t applied) {
+                                     double now_s, std::size_t applied, Method method) {
   std::vector<std::size_t> out;
   for (std::size_t i = applied; i < scenario.changes.size(); ++i) {
     const auto& c = scenario.changes[i];
-    if (c.at_s >= 0.0) {
-      if (now_s + 1e-9 < c.at_s) break;
+    const double at =
+        method == Method::kCentralized && c.centralized_at_s >= 0.0 ? c.centralized_at_s : c.at_s;
+    if (at >= 0.0) {
+      if (now_s + 1e-9 < at) break;
     } else if (first_route_s < 0.0 || now_s + 1e-9 < first_route_s + c.after_route_s) {
       break;
     }
@@ -166,7 +169,7 @@ NetSimResult run_netsim(const NetSimScenario& scenario, const NetSimOptions& opt
       a->flush();
     for (auto& a : agents)
       a->communicate(now);
-    for (std::size_t i : changes_due(scenario, first_route, now, applied)) {
+    for (std::size_t i : changes_due(scenario, first_route, now, applied, options.method)) {
       const auto box = apply_change(truth, scenario.changes[i]);
       applied = i + 1;
       for (auto& a : agents)

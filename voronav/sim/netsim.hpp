@@ -46,11 +46,14 @@ enum class RouteFoundBy : std::uint8_t { kNone, kRelays, kSourceAlone };
 [[nodiscard]] Method parse_method(std::string_view s);
 
 /// An obstacle change (Table 7): `cells` become `value` at the simulated time `at_s` when it is
-/// >= 0 (the same time for both methods; the paper runs use this), else `after_route_s` seconds
-/// after the source first has a route.
+/// >= 0, else `after_route_s` seconds after the source first has a route. With
+/// `centralized_at_s` >= 0 the centralized method gets the change at that time instead of at_s
+/// (the paper runs: the same door closes when each method's source is the same distance before
+/// it on its route in use, scenarios.hpp time_changes_on_routes).
 struct ObstacleChange {
   double after_route_s = 0.0;
   double at_s = -1.0;
+  double centralized_at_s = -1.0;
   std::vector<Cell> cells;
   std::int8_t value = kOccupied;
 };
@@ -97,7 +100,7 @@ struct NetSimOptions {
   bool keep_bridge_on_new_search = false;
   /// The source's start point (its own position, a pseudo open point) may join the source's own
   /// open points by a straight move its map knows is free, as own points join each other.
-  bool source_straight_start = false;
+  bool source_straight_start = true;
   /// Ignored (kept so older scenario files load): the hand-off rule is now always the one rule
   /// of decentralized_search.cpp (a neighbour > 1 m closer than the sender's nearest sent point
   /// takes the Search on), which cannot deadlock (issue #13).
@@ -205,10 +208,11 @@ struct ChangeBox {
 };
 /// Applies `change` to the ground truth (1 = blocked) and returns the box it touched.
 ChangeBox apply_change(BinaryGrid& truth, const ObstacleChange& change);
-/// Indices of the changes from `applied` on that are due at now_s, given when the source first
-/// had a route (-1: not yet, nothing is due). Changes are taken in file order.
+/// Indices of the changes from `applied` on that are due at now_s for `method`, given when the
+/// source first had a route (-1: not yet, nothing is due). Changes are taken in file order.
 [[nodiscard]] std::vector<std::size_t> changes_due(const NetSimScenario& scenario,
                                                    double first_route_s, double now_s,
-                                                   std::size_t applied);
+                                                   std::size_t applied,
+                                                   Method method = Method::kDecentralized);
 
 }  // namespace voronav::sim

@@ -277,7 +277,10 @@ void RobotAgent::timers() {
       blocked_since_ = -1.0;
       // No Repair answer: the source plans a way on its own map to the first route point past
       // the break (counted in replans); only when there is none it starts a new Search.
-      if (!replan_to_route()) {
+      const bool rp = replan_to_route();
+      NS_DEBUG("t=%.1f source repair timeout at (%.1f,%.1f): replan %d\n", now_, r_.pos.x, r_.pos.y,
+               rp ? 1 : 0);
+      if (!rp) {
         route_.clear();
         r_.waypoints.clear();
         start_search();
@@ -358,6 +361,16 @@ void RobotAgent::move(double now_s) {
   } else if (is_source() && r.walk == Walk::kIdle) {
     if (changed) check_source_route();
   } else if (r.walk != Walk::kIdle) {
+    if (is_source() && r.walk == Walk::kDestination && route_.empty()) {
+      source_walk_since_ += moved;
+      if (source_walk_since_ >= 1.0) {
+        source_walk_since_ = 0.0;
+        if (source_walk_check()) {
+          holding_ = false;
+          return;
+        }
+      }
+    }
     r.walk_since_check += moved;
     r.walk_map_changed |= changed;
     bool done = r.wp >= r.waypoints.size();

@@ -207,6 +207,7 @@ class RobotAgent {
   [[nodiscard]] double reference_distance() const;
   [[nodiscard]] bool hands_off_to(Vec2 robot, double sender_reference, double slack) const;
   void consider_bridge(const network::SearchMessage& m);
+  bool source_walk_check();
   void retry_search();
   [[nodiscard]] bool source_sees_way();
   [[nodiscard]] std::size_t own_index_at(Vec2 p) const;
@@ -261,6 +262,10 @@ class RobotAgent {
   std::size_t back_steps_ = 0;  // waypoints of the way back along the trail
   double blocked_since_ = -1.0;
   Vec2 walk_prev;  // position before this step's move
+  // Source walking toward the destination because no radio neighbour could take its Search on:
+  // metres since it last looked for one, and the robots it already handed the Search to.
+  double source_walk_since_ = 0.0;
+  std::vector<network::RobotId> handed_to_;
   std::uint32_t repair_seq_ = 0;
   bool collecting_ = false;
   double last_ack_ = 0.0;

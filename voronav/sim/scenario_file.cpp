@@ -274,7 +274,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
 
 ObstacleChange read_change(const Reader& rd, const YAML::Node& n, const std::string& what,
                            const OccupancyGrid& world) {
-  rd.keys(n, what, {"after_route_s", "at_s", "value", "cells", "rect"});
+  rd.keys(n, what, {"after_route_s", "at_s", "centralized_at_s", "value", "cells", "rect"});
   ObstacleChange ch;
   // When: at a simulated time (at_s, the same for both methods) or after the first route.
   const auto t = n["after_route_s"];
@@ -283,6 +283,11 @@ ObstacleChange read_change(const Reader& rd, const YAML::Node& n, const std::str
   if (t && at) rd.fail(n, what + ": give either 'at_s' or 'after_route_s', not both");
   if (t) ch.after_route_s = rd.nonneg(t, what + ".after_route_s");
   if (at) ch.at_s = rd.nonneg(at, what + ".at_s");
+  // The centralized method's own time (the paper runs, scenarios.hpp); only with at_s.
+  if (const auto ct = n["centralized_at_s"]) {
+    if (!at) rd.fail(ct, what + ": 'centralized_at_s' needs 'at_s'");
+    ch.centralized_at_s = rd.nonneg(ct, what + ".centralized_at_s");
+  }
   if (const auto v = n["value"]) {
     const std::string s = v.IsScalar() ? v.Scalar() : "";
     if (s == "occupied")
@@ -421,10 +426,13 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
     out << "  - " << fmt(p) << "\n";
   out << "changes:" << (sc.changes.empty() ? " []" : "") << "\n";
   for (const auto& ch : sc.changes) {
-    if (ch.at_s >= 0.0)
+    if (ch.at_s >= 0.0) {
       out << "  - at_s: " << fmt(ch.at_s) << "\n";
-    else
+      if (ch.centralized_at_s >= 0.0)
+        out << "    centralized_at_s: " << fmt(ch.centralized_at_s) << "\n";
+    } else {
       out << "  - after_route_s: " << fmt(ch.after_route_s) << "\n";
+    }
     out << "    value: " << (ch.value == kFree ? "free" : "occupied") << "\n"
         << "    cells: [";
     for (std::size_t i = 0; i < ch.cells.size(); ++i)

@@ -262,10 +262,8 @@ TEST_F(MalformedScenario, PlacementOnAnyGrid) {
                "placement.robots: expected an integer in 1..100000");
 }
 
-// The bundled example scenarios on the real ROS maps: both methods reach the destination, except
-// the reworked decentralized protocol on depot (issue 13, open: the relay-built route has a
-// point the source cannot pass after the door closes); there the failure must be the protocol's
-// own, reported with a Search that ran and a route built by relays.
+// The bundled example scenarios on the real ROS maps: both methods reach the destination; the
+// decentralized route is built by relays.
 TEST(ScenarioFile, ExamplesOnTheRosMapsSucceedWithBothMethods) {
   for (const char* name : {"turtlebot3_world.yaml", "depot.yaml"}) {
     const auto f =
@@ -275,11 +273,10 @@ TEST(ScenarioFile, ExamplesOnTheRosMapsSucceedWithBothMethods) {
       NetSimOptions o = f.options;
       o.method = m;
       const auto r = run_netsim(f.scenario, o);
-      if (m == Method::kDecentralized && std::string(name) == "depot.yaml") {
-        EXPECT_GE(r.metrics.search_attempts, 1) << name;
-        continue;
-      }
       EXPECT_TRUE(r.metrics.success) << name << " " << to_string(m);
+      if (m == Method::kDecentralized) {
+        EXPECT_EQ(r.metrics.route_found_by, RouteFoundBy::kRelays) << name;
+      }
     }
   }
 }

@@ -191,16 +191,43 @@ Probe probe(const NetSimScenario& base, Method m) {
   return p;
 }
 
-/// Whether `door` lies on the probe's trajectory after time t, at least `ahead_m` ahead of where
-/// the source is then (0.7 m tolerance); returns the source position at t.
-std::optional<Vec2> ahead_on(const Probe& p, double t, Vec2 door, double ahead_m) {
-  std::size_t k = 0;
-  while (k < p.t.size() && p.t[k] + 1e-9 < t)
+/// The last time the source of the probe, driving its route (after route_s), is `ahead_m` or
+/// farther from the door before it first drives through it (within the robot radius + one cell of
+/// the door's cells, as the source counts a change on its route); -1 when it never passes the
+/// door that far into its route. Also the source position then.
+struct Ahead {
+  double t = -1.0;
+  Vec2 pos;
+};
+Ahead time_before(const Probe& p, const GridGeometry& g, const std::vector<Cell>& door,
+                  double margin, double ahead_m) {
+  Vec2 lo{1e300, 1e300}, hi{-1e300, -1e300};
+  for (Cell c : door) {
+    const Vec2 w = g.cell_center(c);
+    lo = {std::min(lo.x, w.x), std::min(lo.y, w.y)};
+    hi = {std::max(hi.x, w.x), std::max(hi.y, w.y)};
+  }
+  auto through = [&](Vec2 q) {
+    return q.x >= lo.x - margin && q.x <= hi.x + margin && q.y >= lo.y - margin &&
+           q.y <= hi.y + margin;
+  };
+  std::size_t k = 0;  // first step with the route in use
+  while (k < p.t.size() && p.t[k] + 1e-9 < p.route_s + 0.5)
     ++k;
-  if (k >= p.t.size()) return std::nullopt;
-  for (std::size_t i = k; i < p.pos.size(); ++i)
-    if (p.along[i] - p.along[k] >= ahead_m && distance(p.pos[i], door) < 0.7) return p.pos[k];
-  return std::nullopt;
+  auto box_distance = [&](Vec2 q) {
+    const Vec2 c{std::clamp(q.x, lo.x, hi.x), std::clamp(q.y, lo.y, hi.y)};
+    return distance(q, c);
+  };
+  for (std::size_t i = k; i < p.pos.size(); ++i) {
+    if (!through(p.pos[i])) continue;
+    // The last step before it comes within `ahead_m` of the door (so it has not sensed it).
+    std::size_t j = i;
+    while (j > k && box_distance(p.pos[j]) < ahead_m)
+      --j;
+    if (box_distance(p.pos[j]) < ahead_m) return {};  // too close to where the route starts
+    return {p.t[j], p.pos[j]};
+  }
+  return {};
 }
 
 }  // namespace
@@ -212,47 +239,49 @@ void time_changes_on_routes(const OfficeWorld& world, NetSimScenario& sc, int ch
   const Probe pc = probe(sc, Method::kCentralized), pd = probe(sc, Method::kDecentralized);
   if (pc.route_s < 0.0 || pd.route_s < 0.0) return;  // no route to change: no changes
   const auto& g = world.grid.geometry();
-  const BinaryGrid truth = binarize(world.grid);
-  BinaryGrid changed = truth;
+  BinaryGrid changed = binarize(world.grid);
   const auto dest = g.world_to_cell(sc.destination);
-  // Pass 0: while both routes are in use. Pass 1 (only when pass 0 finds nothing, e.g. the
-  // centralized source arrives before the decentralized one has its route): while the
-  // decentralized route is in use, at a door that also lies on the centralized route.
-  for (int pass = 0; pass < 2 && sc.changes.empty(); ++pass) {
-    const double end = (pass == 0 ? std::min(pc.end_s, pd.end_s) : pd.end_s) - 1.0;
-    double t =
-        std::ceil(((pass == 0 ? std::max(pc.route_s, pd.route_s) : pd.route_s) + 1.0) * 2.0) / 2.0;
-    for (int k = 0; k < changes && t <= end; ++k) {
-      bool made = false;
-      for (; t <= end && !made; t += 0.5) {
-        for (const auto& d : world.doors) {
-          bool used = false;
-          for (const auto& ch : sc.changes)
-            used |= ch.cells == d.cells;
-          if (used) continue;
-          const auto a =
-              pass == 0 ? ahead_on(pc, t, d.centre, 4.0) : ahead_on(pc, 0.0, d.centre, 0.0);
-          const auto b = ahead_on(pd, t, d.centre, 4.0);
-          if (!a || !b) continue;
-          BinaryGrid trial = changed;
-          for (Cell c : d.cells)
-            trial[c] = 1;
-          const auto pg = planning::make_planning_grid(trial, robot_radius_m + 0.1);
-          const auto ca = g.world_to_cell(*a), cb = g.world_to_cell(*b);
-          if (!ca || !cb || !dest || pg[*ca] || pg[*cb] || !truth_plan(pg, *ca, *dest).ok() ||
-              !truth_plan(pg, *cb, *dest).ok())
-            continue;
-          changed = std::move(trial);
-          ObstacleChange ch;
-          ch.at_s = t;
-          ch.cells = d.cells;
-          sc.changes.push_back(std::move(ch));
-          made = true;
-          break;
-        }
-      }
-      if (!sc.changes.empty()) t = std::max(t, sc.changes.back().at_s + every_s);
-    }
+  // The same door for both methods, closing in front of each source: the last moment it is
+  // 2 m or more from the door before it drives through it. Closer than its 3 m sensing range,
+  // so its plan already goes through the door (the centralized plan through unknown space cuts
+  // corners beside a door it has not seen yet, and a change there would not be on its route),
+  // and far enough to stop (Repair, replan). Candidates in the order the decentralized source
+  // reaches them; each change after the previous one for both methods (every_s apart).
+  constexpr double kAheadM = 2.0;
+  struct Cand {
+    std::size_t door;
+    Ahead c, d;
+  };
+  std::vector<Cand> cands;
+  for (std::size_t i = 0; i < world.doors.size(); ++i) {
+    const double margin = robot_radius_m;  // a source driving through passes this close
+    const auto c = time_before(pc, g, world.doors[i].cells, margin, kAheadM);
+    const auto d = time_before(pd, g, world.doors[i].cells, margin, kAheadM);
+    if (c.t >= 0.0 && d.t >= 0.0) cands.push_back({i, c, d});
+  }
+  std::stable_sort(cands.begin(), cands.end(),
+                   [](const Cand& a, const Cand& b) { return a.d.t < b.d.t; });
+  double last_c = -1e9, last_d = -1e9;
+  for (const auto& cd : cands) {
+    if (static_cast<int>(sc.changes.size()) >= changes) break;
+    if (cd.c.t < last_c + every_s || cd.d.t < last_d + every_s) continue;
+    const auto& door = world.doors[cd.door];
+    BinaryGrid trial = changed;
+    for (Cell c : door.cells)
+      trial[c] = 1;
+    const auto pg = planning::make_planning_grid(trial, robot_radius_m + 0.1);
+    const auto ca = g.world_to_cell(cd.c.pos), cb = g.world_to_cell(cd.d.pos);
+    if (!ca || !cb || !dest || pg[*ca] || pg[*cb] || !truth_plan(pg, *ca, *dest).ok() ||
+        !truth_plan(pg, *cb, *dest).ok())
+      continue;
+    changed = std::move(trial);
+    ObstacleChange ch;
+    ch.at_s = cd.d.t;
+    ch.centralized_at_s = cd.c.t;
+    ch.cells = door.cells;
+    sc.changes.push_back(std::move(ch));
+    last_c = cd.c.t;
+    last_d = cd.d.t;
   }
 }
 

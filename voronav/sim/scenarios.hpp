@@ -47,12 +47,13 @@ struct PlacementOptions {
                                           const PlacementOptions& options,
                                           std::optional<Vec2> destination = std::nullopt);
 
-/// Replaces the changes of `sc` by `changes` closed doors at simulated times (at_s) that are the
-/// same for both methods and lie on both methods' routes ahead of the source while they are in
-/// use (issue #13): runs both methods once without changes (default options), then picks the
-/// earliest time after both have a route and before either arrives at which a door lies >= 4 m
-/// ahead on both sources' trajectories and closing it keeps the destination reachable; later
-/// changes follow every_s apart. Fewer changes when no such door exists (the run records it).
+/// Replaces the changes of `sc` by `changes` closed doors on both methods' routes while they are
+/// in use (issue #13): runs both methods once without changes (default options) and picks doors
+/// both sources drive through after they have their routes; each door closes when the source of
+/// each method is 5 m (along its trajectory) before it (at_s for the decentralized method,
+/// centralized_at_s for the centralized one: the same place and the same situation, at each
+/// method's own time), keeping the destination reachable; later changes at least every_s after
+/// the previous one for both. Fewer changes when no such door exists (the run records it).
 void time_changes_on_routes(const OfficeWorld& world, NetSimScenario& sc, int changes,
                             double every_s, double robot_radius_m);
 
