@@ -116,7 +116,9 @@ report::Recording netsim_recording(const sim::NetSimScenario& sc, const sim::Net
   if (!sc.changes.empty() && m.route_time_s >= 0)
     rec.description += " " + std::to_string(sc.changes.size()) + " obstacle change" +
                        (sc.changes.size() == 1 ? "" : "s") + " (orange); " +
-                       std::to_string(m.repairs) + " repair" + (m.repairs == 1 ? "" : "s") + ".";
+                       std::to_string(m.repairs) + " route break" + (m.repairs == 1 ? "" : "s") +
+                       " handled, " + std::to_string(m.repairs_executed) + " Repair" +
+                       (m.repairs_executed == 1 ? "" : "s") + " executed (purple marks).";
   if (m.arrival_time_s >= 0)
     rec.description += " The source arrives at " + format_seconds(m.arrival_time_s) + ".";
   rec.map = sc.world;
@@ -178,9 +180,22 @@ report::Recording netsim_recording(const sim::NetSimScenario& sc, const sim::Net
                           std::to_string(c.cells.size()) + " cells become " +
                               (c.value == kOccupied ? "blocked" : "free"),
                           -1});
+  // Every route break handled, from the run itself: "repair" where a detour was found (a Repair
+  // executed), "blocked" where the robot had to ask for help.
+  for (const auto& rp : in.repairs) {
+    const bool is_source = rp.robot == sc.source;
+    rec.events.push_back(
+        {rp.t_s, rp.executed ? "repair" : "blocked",
+         (is_source ? std::string("the source") : "robot " + std::to_string(rp.robot)) + " " +
+             rp.what,
+         static_cast<int>(rp.robot)});
+  }
   if (m.arrival_time_s >= 0)
     rec.events.push_back(
         {m.arrival_time_s, "arrival", "the source reaches the destination", source_id});
+  std::stable_sort(
+      rec.events.begin(), rec.events.end(),
+      [](const report::EventRecord& a, const report::EventRecord& b) { return a.t < b.t; });
   report::Plot traffic{
       "Radio traffic by message type", "", "bytes", report::PlotKind::kBar, false, {}, {}};
   report::Series bytes{"bytes on the air", "#1f77b4", {}, {}};

@@ -67,6 +67,7 @@ void RobotAgent::on(const Header&, const NotifyMessage& m) {
     return;
   }
   ++report_.repairs;
+  log_repair(false, "learns the route is blocked and asks for the maps again");
   if (!collecting_) start_request();
 }
 

@@ -133,6 +133,7 @@ void RobotAgent::check_relay_route() {
   auto fixed = detour(path, br->first, br->second);
   if (!fixed.empty()) {
     ++report_.repairs_executed;
+    log_repair(true, "repairs the route with its own detour (Repair executed)");
     PathMessage p = *r.saved;
     p.num = next_repair_num();
     p.whole_path = fixed;
@@ -149,6 +150,7 @@ void RobotAgent::check_relay_route() {
   m.broken_from = br->first;
   m.broken_to = br->second;
   r.repairs_seen.insert(m.num);
+  log_repair(false, "finds the route blocked and asks its neighbours (Repair message)");
   broadcast(m, 1);
 }
 
@@ -161,6 +163,8 @@ void RobotAgent::on(const Header& h, const RepairMessage& m) {
            fixed.size());
   if (!fixed.empty()) {
     ++report_.repairs_executed;
+    log_repair(true, "answers robot " + std::to_string(h.sender.value) +
+                         "'s Repair with a detour (Repair executed)");
     PathMessage p;
     p.source = m.source;
     p.num = next_repair_num();
@@ -256,6 +260,7 @@ void RobotAgent::check_source_route() {
   NS_DEBUG("t=%.1f source own detour %zu\n", now_, fixed.size());
   if (!fixed.empty()) {
     ++report_.repairs_executed;
+    log_repair(true, "detours around the block on its own map (Repair executed)");
     route_.erase(route_.begin() + static_cast<std::ptrdiff_t>(std::min(next, route_.size())),
                  route_.end());
     route_.insert(route_.end(), fixed.begin() + 1, fixed.end());
@@ -271,6 +276,7 @@ void RobotAgent::check_source_route() {
   m.broken_from = br->first;
   m.broken_to = br->second;
   s.repairs_seen.insert(m.num);
+  log_repair(false, "is blocked and asks its neighbours (Repair message)");
   broadcast(m, 1);
 }
 

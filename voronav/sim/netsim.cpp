@@ -135,7 +135,8 @@ NetSimResult run_netsim(const NetSimScenario& scenario, const NetSimOptions& opt
   BinaryGrid truth = binarize(scenario.world);
   NetSimResult res;
   auto& rec = res.recording;
-  AgentContext ctx{&scenario, &options, &truth, options.record ? &rec.messages : nullptr};
+  AgentContext ctx{&scenario, &options, &truth, options.record ? &rec.messages : nullptr,
+                   options.record ? &rec.repairs : nullptr};
   std::vector<std::unique_ptr<RobotAgent>> agents;
   for (std::size_t i = 0; i < scenario.robots.size(); ++i)
     agents.push_back(std::make_unique<RobotAgent>(ctx, RobotId{static_cast<std::uint32_t>(i)},

@@ -132,6 +132,15 @@ struct RecordedMessage {
   network::MessageType type{};
   std::size_t bytes = 0;
 };
+/// One handled route break (for the replay's event track): who, when, and whether a detour was
+/// found there (a Repair executed, Tables 4–5) or help was asked for (Repair broadcast, or the
+/// centralized source's re-request).
+struct RecordedRepair {
+  double t_s = 0.0;
+  std::uint32_t robot = 0;
+  bool executed = false;  ///< a detour was found (counts in NetSimMetrics::repairs_executed)
+  std::string what;       ///< plain words, e.g. "repairs the route with its own detour"
+};
 struct RecordedStep {
   double t_s = 0.0;
   std::vector<Vec2> positions;
@@ -140,6 +149,7 @@ struct Recording {
   GridGeometry world;
   std::vector<RecordedStep> steps;
   std::vector<RecordedMessage> messages;
+  std::vector<RecordedRepair> repairs;          ///< every route break handled, in time order
   std::vector<OccupancyGrid> final_local_maps;  ///< each robot's map at the end (window)
   std::vector<Vec2> route;                      ///< the source's final route [m]
   std::vector<std::vector<network::VoronoiPoint>> open_points;  ///< per robot, at the end

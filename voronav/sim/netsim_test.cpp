@@ -156,6 +156,26 @@ TEST(NetSim, BlockedRouteIsRepairedLocallyWithFewerMessagesThanACentralizedRepla
   EXPECT_EQ(d0.repairs_executed, 0);
 
   EXPECT_GE(c1.repairs, 1);
+  // A recorded run lists every break handled with its time and robot (the replay's event
+  // track): the executed ones match the count of the metrics.
+  {
+    NetSimOptions o;
+    o.record = true;
+    const auto rr = run_netsim(hall_with_block(true), o);
+    int executed = 0, handled = 0;
+    for (const auto& rp : rr.recording.repairs) {
+      ++handled;
+      executed += rp.executed ? 1 : 0;
+      EXPECT_GT(rp.t_s, rr.metrics.route_time_s) << rp.what;
+      EXPECT_LT(rp.robot, hall_with_block(true).robots.size());
+      EXPECT_FALSE(rp.what.empty());
+    }
+    EXPECT_EQ(executed, rr.metrics.repairs_executed);
+    EXPECT_GE(executed, 1);
+    EXPECT_GE(handled, executed);
+    EXPECT_TRUE(run_netsim(hall_with_block(true), NetSimOptions{}).recording.repairs.empty())
+        << "nothing is logged without record";
+  }
   const auto d_extra = d1.messages - d0.messages, c_extra = c1.messages - c0.messages;
   EXPECT_LT(d_extra, c_extra);
   EXPECT_LT(d1.traffic_bytes - d0.traffic_bytes, c1.traffic_bytes - c0.traffic_bytes);

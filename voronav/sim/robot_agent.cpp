@@ -188,6 +188,10 @@ VoronoiPointsOptions RobotAgent::points_opts() const {
 }
 
 // ---- messaging --------------------------------------------------------------------------------
+void RobotAgent::log_repair(bool executed, std::string what) {
+  if (ctx_.repair_log) ctx_.repair_log->push_back({now_, r_.id.value, executed, std::move(what)});
+}
+
 void RobotAgent::transmit(RobotId to, std::vector<std::uint8_t> bytes) {
   if (holding_) {
     held_.push_back({to, std::move(bytes)});

@@ -41,6 +41,8 @@ struct AgentContext {
   const BinaryGrid* truth = nullptr;
   /// When set, every transmission is appended here (recordings).
   std::vector<RecordedMessage>* message_log = nullptr;
+  /// When set, every route break handled (and every Repair executed) is appended here.
+  std::vector<RecordedRepair>* repair_log = nullptr;
 };
 
 /// One robot's share of the run metrics (NetSimMetrics is the sum over robots, see
@@ -179,6 +181,8 @@ class RobotAgent {
   void link_ack(const network::Header& h);
   void handle_packet(const network::Packet& p);
   void timers();
+  /// Appends to ctx_.repair_log (when recording) a route break handled now by this robot.
+  void log_repair(bool executed, std::string what);
 
   void on_map_changed();
   // motion
