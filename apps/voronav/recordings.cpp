@@ -275,6 +275,29 @@ report::Recording exploration_recording(const exploration::ExplorationResult& re
   for (std::size_t r = 0; r < in.routes.size() && r < n; ++r)
     if (in.routes[r].size() >= 2)
       rec.paths.push_back({static_cast<int>(r), tree_time, "tree route", in.routes[r]});
+  // Events from the run itself: the first tree, every re-plan along a new tree, every leaf
+  // reached, every goal the progress watchdog gave up, every stalled robot.
+  if (in.tree_time >= 0.0)
+    rec.events.push_back({in.tree_time, "tree",
+                          "the first Voronoi tree is built (" +
+                              std::to_string(in.tree.leaves_by_distance().size()) + " leaves)",
+                          -1});
+  for (const auto& d : in.dispatches)
+    if (!d.first)
+      rec.events.push_back({d.t, "tree",
+                            "robot " + std::to_string(d.robot) + " re-plans along a new tree",
+                            d.robot});
+  for (const auto& e : in.events) {
+    const std::string who = "robot " + std::to_string(e.robot);
+    const std::string text = e.kind == "leaf"       ? who + " reaches a tree leaf"
+                             : e.kind == "watchdog" ? who + " gives up its goal (no progress)"
+                             : e.kind == "stalled"  ? who + " is stalled"
+                                                    : who + " " + e.kind;
+    rec.events.push_back({e.t, e.kind, text, e.robot});
+  }
+  std::stable_sort(
+      rec.events.begin(), rec.events.end(),
+      [](const report::EventRecord& a, const report::EventRecord& b) { return a.t < b.t; });
   report::Plot cov{"Coverage", "time [s]", "coverage [%]", report::PlotKind::kLine, true, {}, {}};
   report::Series s{"team", "#2ca02c", {}, {}};
   for (const auto& f : in.frames) {

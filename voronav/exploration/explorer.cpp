@@ -399,10 +399,18 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     a.route.clear();
     a.retry_at = t;
   };
+  const auto log_event = [&](double t, const Agent& a, const char* kind) {
+    int id = -1;
+    for (std::size_t i = 0; i < agents.size(); ++i)
+      if (agents[i].get() == &a) id = static_cast<int>(i);
+    result.recording.events.push_back({t, id, kind});
+  };
   const auto finish_leg = [&](Agent& a, double t) {
     if (!a.legs.empty()) {
-      if (distance(a.body.true_pose().position, a.legs.front().back()) < 2.0 * o.goal_tolerance)
+      if (distance(a.body.true_pose().position, a.legs.front().back()) < 2.0 * o.goal_tolerance) {
         ++result.leaves_reached;
+        log_event(t, a, "leaf");
+      }
       a.legs.pop_front();
     }
     start_leg(a, t);
@@ -763,7 +771,10 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         if (a.next >= a.route.size()) {
           if (a.goal_leaf && a.goal) {
             // A leaf is visited once: reached (or its route ended short of it) it is done.
-            if (distance(pose.position, *a.goal) < 2.0 * o.goal_tolerance) ++result.leaves_reached;
+            if (distance(pose.position, *a.goal) < 2.0 * o.goal_tolerance) {
+              ++result.leaves_reached;
+              log_event(t, a, "leaf");
+            }
             a.blacklist.push_back(*a.goal);
           }
           a.goal.reset();
@@ -848,6 +859,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         a.wd_anchor = now;
         a.wd_t = t;
         ++result.watchdog_events;
+        log_event(t, a, "watchdog");
         if (a.on_tree) {
           finish_leg(a, t);
         } else if (a.mode == AgentMode::kFollow) {
@@ -864,6 +876,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       } else if (!a.stalled && t - a.anchor_t > o.stall_time && last_coverage < 0.99) {
         a.stalled = true;
         ++result.stalled_robots;
+        log_event(t, a, "stalled");
       }
     }
     // Record.

@@ -112,6 +112,13 @@ struct TreeDispatch {
   std::vector<Vec2> route;   ///< waypoints to its first leaf [m]
 };
 
+/// A moment worth marking on the replay's event track, logged where it happened.
+struct ExplorationEvent {
+  double t = 0.0;  ///< [s]
+  int robot = -1;
+  std::string kind;  ///< "leaf" (a tree leaf reached), "watchdog" (goal given up), "stalled"
+};
+
 struct ExplorationRecording {
   GridGeometry geometry;
   std::vector<Vec2> starts;
@@ -122,6 +129,7 @@ struct ExplorationRecording {
   std::vector<std::vector<Vec2>> routes;   ///< waypoints per robot of the first tree
   double tree_time = -1.0;                 ///< [s] when the first tree was built (-1: never)
   std::vector<TreeDispatch> dispatches;    ///< every tree dispatch, in time order
+  std::vector<ExplorationEvent> events;    ///< leaves reached, goals given up, stalls (time order)
   OccupancyGrid team_map;                  ///< final merged map (ROS values)
   /// [s] per cell (row-major, the recording's geometry): when the team map first knew the cell;
   /// negative = never.

@@ -146,6 +146,22 @@ TEST(Dispatch, OneDispatchAsThePaper) {
     EXPECT_NE(at_root, d.route.end());
   }
   EXPECT_GE(r.leaves_reached, 1);  // the mechanism fired: robots reached tree leaves
+  // The recording logs each leaf reached (time, robot) for the replay's event track, one entry
+  // per count of the result, each after the dispatch and by a robot of the team.
+  int leaves = 0, watchdog = 0, stalled = 0;
+  for (const ExplorationEvent& e : r.recording.events) {
+    leaves += e.kind == "leaf" ? 1 : 0;
+    watchdog += e.kind == "watchdog" ? 1 : 0;
+    stalled += e.kind == "stalled" ? 1 : 0;
+    EXPECT_GE(e.robot, 0);
+    EXPECT_LT(e.robot, 3);
+    if (e.kind == "leaf") {
+      EXPECT_GE(e.t, 120.0);
+    }
+  }
+  EXPECT_EQ(leaves, r.leaves_reached);
+  EXPECT_EQ(watchdog, r.watchdog_events);
+  EXPECT_EQ(stalled, r.stalled_robots);
 }
 
 TEST(Dispatch, ReplanNeverRoutesARobotBackToTheRoot) {
