@@ -243,6 +243,28 @@ def case_demo():
             html = open(os.path.join(out, page)).read()
             check("voronav-recording" in html and "http://" not in html.replace(
                 "http://www.w3.org", ""), page + " must be a self-contained replay page")
+        # What the pages tell (issue 20): the events come from the runs themselves and the robot
+        # ids are the ids of summary.json.
+        def recording(page):
+            html = open(os.path.join(out, page)).read()
+            start = html.index('<script id="recording" type="application/json">')
+            start = html.index(">", start) + 1
+            return json.loads(html[start:html.index("</script>", start)])
+        net = recording("netsim.html")
+        repairs = [e for e in net["events"] if e["kind"] == "repair"]
+        check(len(repairs) == summary["networked"]["repairs_executed"],
+              f"one repair event per Repair executed: {len(repairs)} events, {summary['networked']}")
+        check(all("robot" in e and e["t"] >= summary["networked"]["route_time_s"] for e in repairs),
+              "repair events name their robot and come after the route: " + str(repairs[:3]))
+        check(sorted(r["id"] for r in net["robots"]) == list(range(summary["networked"]["robots"])),
+              "netsim page ids 0..N-1 as the scenario and --kill-robot")
+        ex = recording("explore.html")
+        kinds = {e["kind"] for e in ex["events"]}
+        check("tree" in kinds and "leaf" in kinds, f"exploration events: {sorted(kinds)}")
+        check(sorted(r["id"] for r in recording("index.html")["robots"]) ==
+              sorted(a["id"] for a in co["agents"]), "coordination page ids are the summary's ids")
+        check(sorted(a["id"] for a in co["agents"]) == list(range(len(co["agents"]))),
+              "the demo numbers every team from 0: " + str(co["agents"]))
 
 
 globals()["case_" + CASE]()

@@ -263,7 +263,7 @@ struct Demo {
     sc.map = io::LoadedMap{built_map, io::MapFormat::kImage, "built map"};
     for (int i = 0; i < args.robots; ++i) {
       co::RobotSpec r;
-      r.id = i + 1;
+      r.id = i;  // ids from 0, as the networked and exploration stages (one convention, issue 20)
       const bool forward = i % 2 == 0;
       r.start = draw_near(forward ? a : b);
       r.goal = draw_near(forward ? b : a);
