@@ -261,6 +261,11 @@ def case_demo():
         ex = recording("explore.html")
         kinds = {e["kind"] for e in ex["events"]}
         check("tree" in kinds and "leaf" in kinds, f"exploration events: {sorted(kinds)}")
+        first_tree = min(e["t"] for e in ex["events"] if e["kind"] == "tree")
+        trees = [g for g in ex["graphs"] if g["name"] == "Voronoi tree"]
+        check(len(trees) == 1 and trees[0].get("shown_from") == first_tree,
+              "the tree is drawn from its first build, not from t = 0: " +
+              str([(g["name"], g.get("shown_from")) for g in ex["graphs"]]))
         check(sorted(r["id"] for r in recording("index.html")["robots"]) ==
               sorted(a["id"] for a in co["agents"]), "coordination page ids are the summary's ids")
         check(sorted(a["id"] for a in co["agents"]) == list(range(len(co["agents"]))),

@@ -262,6 +262,8 @@ report::Recording exploration_recording(const exploration::ExplorationResult& re
       if (node.parent >= 0) tree.edges.push_back({node.parent, static_cast<int>(i)});
     }
     rec.graphs.push_back(std::move(tree));
+    // The page draws the tree from the time it was first built, not from t = 0.
+    if (in.tree_time >= 0.0) rec.graph_appearances.push_back({rec.graphs.size() - 1, in.tree_time});
   }
   if (!in.feature_points.empty()) {
     report::GraphLayer fp{"Feature points", "#ff7f0e", true, {}, {}};
