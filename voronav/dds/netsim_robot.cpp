@@ -124,8 +124,10 @@ int run_robot_process(const RobotProcessOptions& o) {
   TraceFile trace(o.trace_path);
   if (!o.trace_path.empty() && !trace.on())
     throw Error(o.trace_path, 0, "cannot write the trace file");
-  std::vector<sim::RecordedMessage> sent;  // since the last trace line
-  sim::AgentContext ctx{&sc, &opts, &truth, trace.on() ? &sent : nullptr};
+  std::vector<sim::RecordedMessage> sent;    // since the last trace line
+  std::vector<sim::RecordedRepair> repairs;  // route breaks handled, since the last trace line
+  sim::AgentContext ctx{&sc, &opts, &truth, trace.on() ? &sent : nullptr,
+                        trace.on() ? &repairs : nullptr};
   sim::RobotAgent agent(ctx, network::RobotId{o.id}, sc.robots[o.id], net);
   const std::string who = "voronav-robot " + std::to_string(o.id);
 
@@ -181,8 +183,9 @@ int run_robot_process(const RobotProcessOptions& o) {
     }
     if (tick->step == 0) {
       agent.start();
-      trace.robot_step(0, 0.0, agent.position(), sent);
+      trace.robot_step(0, 0.0, agent.position(), sent, repairs);
       sent.clear();
+      repairs.clear();
       started = true;
       report(kDone, 0);
       continue;
@@ -224,8 +227,9 @@ int run_robot_process(const RobotProcessOptions& o) {
       rep.changes_applied = c + 1;
       agent.world_changed(now, box.lo, box.hi);
     }
-    trace.robot_step(step, now, agent.position(), sent);
+    trace.robot_step(step, now, agent.position(), sent, repairs);
     sent.clear();
+    repairs.clear();
     report(kDone, step);
     if (o.die_at_step && *o.die_at_step == step) {
       std::cerr << who << ": killing itself after step " << step << " (fault injection)\n";

@@ -22,11 +22,19 @@ void TraceFile::line(const std::string& s) {
 }
 
 void TraceFile::robot_step(std::uint32_t k, double t, Vec2 p,
-                           const std::vector<sim::RecordedMessage>& sent) {
+                           const std::vector<sim::RecordedMessage>& sent,
+                           const std::vector<sim::RecordedRepair>& repairs) {
   json m = json::array();
   for (const auto& s : sent)
     m.push_back({s.t_s, s.to, static_cast<int>(s.type), s.bytes});
-  line(json{{"k", k}, {"t", t}, {"p", {p.x, p.y}}, {"m", m}}.dump());
+  json j{{"k", k}, {"t", t}, {"p", {p.x, p.y}}, {"m", m}};
+  if (!repairs.empty()) {
+    json r = json::array();
+    for (const auto& e : repairs)
+      r.push_back({e.t_s, e.robot, e.executed, e.what});
+    j["r"] = r;
+  }
+  line(j.dump());
 }
 
 void TraceFile::robot_route(const std::vector<Vec2>& route) {
@@ -75,6 +83,10 @@ void read_netsim_traces(const std::vector<std::string>& robot_files, const std::
               {m.at(0).get<double>(), static_cast<std::uint32_t>(r), m.at(1).get<std::uint32_t>(),
                static_cast<network::MessageType>(type), m.at(3).get<std::size_t>()});
         }
+        if (j.contains("r"))
+          for (const auto& e : j.at("r"))
+            rec.repairs.push_back({e.at(0).get<double>(), e.at(1).get<std::uint32_t>(),
+                                   e.at(2).get<bool>(), e.at(3).get<std::string>()});
       } catch (const json::exception&) {
         // a line cut short by a killed process
       }
@@ -87,6 +99,8 @@ void read_netsim_traces(const std::vector<std::string>& robot_files, const std::
     rec.steps.push_back({st.first, last});
   }
   std::stable_sort(rec.messages.begin(), rec.messages.end(),
+                   [](const auto& a, const auto& b) { return a.t_s < b.t_s; });
+  std::stable_sort(rec.repairs.begin(), rec.repairs.end(),
                    [](const auto& a, const auto& b) { return a.t_s < b.t_s; });
   std::ifstream w(world_file);
   std::string s;

@@ -26,9 +26,11 @@ TEST(NetsimTrace, RobotAndWorldTracesRoundTrip) {
     ASSERT_TRUE(t0.on() && t1.on() && tw.on());
     t0.robot_step(0, 0.0, {1.0, 1.0}, {});
     t1.robot_step(0, 0.0, {5.0, 5.0}, {{0.0, 1, 0, network::MessageType::kSearch, 40}});
-    t0.robot_step(1, 0.2, {1.2, 1.0}, {{0.1, 0, 1, network::MessageType::kSearch, 30}});
+    t0.robot_step(1, 0.2, {1.2, 1.0}, {{0.1, 0, 1, network::MessageType::kSearch, 30}},
+                  {{0.2, 0, false, "is blocked and asks its neighbours (Repair message)"}});
     // robot 1 dies after step 0: no line for step 1
-    t0.robot_step(2, 0.4, {1.4, 1.0}, {});
+    t0.robot_step(2, 0.4, {1.4, 1.0}, {},
+                  {{0.4, 0, true, "takes robot 1's detour (Repair executed)"}});
     t0.robot_route({{1.0, 1.0}, {9.0, 1.0}});
     tw.event({0.2, 1, "dead", 1, "declared dead"});
   }
@@ -45,6 +47,14 @@ TEST(NetsimTrace, RobotAndWorldTracesRoundTrip) {
   EXPECT_EQ(rec.messages[1].to, 1U);
   EXPECT_EQ(rec.messages[1].bytes, 30U);
   EXPECT_EQ(rec.messages[1].type, network::MessageType::kSearch);
+  // The route breaks each robot handled (the replay's and the bag's repair/blocked events).
+  ASSERT_EQ(rec.repairs.size(), 2U);
+  EXPECT_DOUBLE_EQ(rec.repairs[0].t_s, 0.2);
+  EXPECT_FALSE(rec.repairs[0].executed);
+  EXPECT_EQ(rec.repairs[0].what, "is blocked and asks its neighbours (Repair message)");
+  EXPECT_EQ(rec.repairs[1].robot, 0U);
+  EXPECT_TRUE(rec.repairs[1].executed);
+  EXPECT_EQ(rec.repairs[1].what, "takes robot 1's detour (Repair executed)");
   ASSERT_EQ(rec.route.size(), 2U);
   EXPECT_EQ(rec.route[1], (Vec2{9.0, 1.0}));
   ASSERT_EQ(events.size(), 1U);

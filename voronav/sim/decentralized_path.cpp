@@ -125,10 +125,10 @@ void RobotAgent::pending_step() {
 }
 
 // ---- Table 3 -----------------------------------------------------------------------------------
-void RobotAgent::on(const Header&, const PathMessage& m) {
+void RobotAgent::on(const Header& h, const PathMessage& m) {
   auto& r = r_;
   if (m.num & kRepairFlag) {
-    on_repair_path(m);
+    on_repair_path(m, h.sender);
     return;
   }
   if (m.relays.empty() || m.whole_path.empty()) {

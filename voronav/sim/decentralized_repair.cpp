@@ -128,16 +128,24 @@ void RobotAgent::check_relay_route() {
   auto path = r.saved->whole_path;
   const auto br = find_break(path, 0);
   if (!br) return;
+  // Asked once per break: the map of a relay changes every step it walks, and the same break
+  // would otherwise start a new Repair each time (Table 4 line 1: only a new Repair is handled).
+  const std::pair<Vec2, Vec2> ends{path[br->first].position, path[br->second].position};
+  if (relay_break_ && distance(relay_break_->first, ends.first) < 1e-3 &&
+      distance(relay_break_->second, ends.second) < 1e-3)
+    return;
+  relay_break_ = ends;
   ++report_.repairs;
   shrink_to_map(path);  // so the Repair tells the others which free discs the change cut
   auto fixed = detour(path, br->first, br->second);
   if (!fixed.empty()) {
-    ++report_.repairs_executed;
-    log_repair(true, "repairs the route with its own detour (Repair executed)");
+    // Its own detour goes to the source like an answer; it counts as a Repair executed when the
+    // source takes it (splice_route).
     PathMessage p = *r.saved;
     p.num = next_repair_num();
     p.whole_path = fixed;
     r.saved->whole_path = fixed;
+    relay_break_.reset();
     if (!p.relays.empty()) send_reliable(p.relays.back(), p);
     return;
   }
@@ -162,16 +170,15 @@ void RobotAgent::on(const Header& h, const RepairMessage& m) {
   NS_DEBUG("t=%.1f robot %u repair from %u: detour %zu\n", now_, r.id.value, h.sender.value,
            fixed.size());
   if (!fixed.empty()) {
-    ++report_.repairs_executed;
-    log_repair(true, "answers robot " + std::to_string(h.sender.value) +
-                         "'s Repair with a detour (Repair executed)");
+    // Table 4 line 3: it knows a way and answers (once: a Repair it has seen is not new). The
+    // answer counts as a Repair executed where the source takes it (splice_route).
     PathMessage p;
     p.source = m.source;
     p.num = next_repair_num();
     p.relays = m.relays;
     p.whole_path = fixed;
     if (is_source()) {
-      on_repair_path(p);
+      on_repair_path(p, r.id);
     } else {
       send_reliable(h.sender, p);
     }
@@ -180,10 +187,10 @@ void RobotAgent::on(const Header& h, const RepairMessage& m) {
   if (h.hops < opt().repair_hops) broadcast(m, static_cast<std::uint8_t>(h.hops + 1));  // relay
 }
 
-void RobotAgent::on_repair_path(PathMessage m) {
+void RobotAgent::on_repair_path(PathMessage m, RobotId from) {
   auto& r = r_;
   if (is_source()) {
-    splice_route(m.whole_path);
+    splice_route(m.whole_path, from);
     return;
   }
   if (!m.relays.empty() && m.relays.back() == r.id) m.relays.pop_back();
@@ -197,38 +204,86 @@ void RobotAgent::on_repair_path(PathMessage m) {
     if (at == w.end()) at = w.begin();  // not on it: the answer replaces it (as before)
     w.erase(at, w.end());
     w.insert(w.end(), m.whole_path.begin(), m.whole_path.end());
+    relay_break_.reset();
   }
   if (!m.relays.empty()) send_reliable(m.relays.back(), m);
 }
 
-void RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole) {
-  if (whole.empty() || route_.empty()) return;
+/// The source stops waiting for a Repair answer (repaired, re-planned or given up).
+void RobotAgent::repair_done() {
+  blocked_since_ = -1.0;
+  repair_out_.reset();
+  repair_resend_at_ = -1.0;
+}
+
+/// Source: re-sends its unanswered Repair (same Num: only robots that have not had it handle it)
+/// after repair_resend_s, doubling the wait each time (option, not in the paper).
+void RobotAgent::repair_timers() {
+  if (!repair_out_ || blocked_since_ < 0.0 || repair_resend_at_ < 0.0) return;
+  if (now_ + 1e-9 < repair_resend_at_) return;
+  repair_resend_gap_ *= 2.0;
+  repair_resend_at_ = now_ + repair_resend_gap_;
+  broadcast(*repair_out_, 1);
+}
+
+/// Source: takes a repaired route (the answer to a Repair, or a relay's own detour). With
+/// repair_check_answer the route ahead must be free in the source's own map (it has seen the
+/// change; the answerer may not have): an answer that still runs into the change is ignored and
+/// the source keeps waiting. The first answer taken ends the wait, so later answers to the same
+/// Repair no longer match the source's position and are ignored. Returns whether it was taken.
+bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId from) {
+  if (whole.empty() || route_.empty()) return false;
   auto& s = r_;
   const std::size_t done = next_route_index();
+  auto free_ahead = [&](const std::vector<VoronoiPoint>& ahead) {
+    if (!opt().repair_check_answer) return true;
+    std::vector<VoronoiPoint> rest{VoronoiPoint{s.pos, 1.0f, 0.0f}};
+    rest.insert(rest.end(), ahead.begin(), ahead.end());
+    return !find_break(rest, 0);
+  };
+  auto taken = [&] {
+    ++report_.repairs_executed;
+    log_repair(true, from == s.id ? "repairs its route with its own detour (Repair executed)"
+                                  : "takes robot " + std::to_string(from.value) +
+                                        "'s detour (Repair executed)");
+  };
   if (distance(whole.front().position, s.pos) < 1e-3) {
     // The answer to the source's own Repair: it starts where the source stands (it waits there
     // while blocked) and replaces the rest of the route.
+    if (!repair_out_) return false;  // already answered: the first answer won
+    const std::vector<VoronoiPoint> ahead(whole.begin() + 1, whole.end());
+    if (!free_ahead(ahead)) {
+      NS_DEBUG("t=%.1f source ignores robot %u's detour (blocked in its map)\n", now_, from.value);
+      return false;
+    }
     route_.erase(route_.begin() + static_cast<std::ptrdiff_t>(std::min(done, route_.size())),
                  route_.end());
-    route_.insert(route_.end(), whole.begin() + 1, whole.end());
+    route_.insert(route_.end(), ahead.begin(), ahead.end());
     set_source_waypoints(std::min(done, route_.size()));
-    blocked_since_ = -1.0;
+    repair_done();
+    taken();
     NS_DEBUG("t=%.1f source splices a repaired route (%zu points)\n", now_, whole.size());
-    return;
+    return true;
   }
   for (std::size_t i = route_.size(); i-- > 0;) {
     if (distance(route_[i].position, whole.front().position) < 1e-3) {
       if (i + 1 < done) break;  // already passed: the splice point is behind the source
       std::vector<VoronoiPoint> n(route_.begin(), route_.begin() + static_cast<std::ptrdiff_t>(i));
       n.insert(n.end(), whole.begin(), whole.end());
+      const std::size_t next = std::max<std::size_t>(done, 1) - 1;
+      if (!free_ahead(std::vector<VoronoiPoint>(
+              n.begin() + static_cast<std::ptrdiff_t>(std::min(next, n.size())), n.end())))
+        return false;
       route_ = std::move(n);
-      set_source_waypoints(std::max<std::size_t>(done, 1) - 1);
+      set_source_waypoints(next);
       s.waypoints.insert(s.waypoints.begin(), s.pos);
       back_steps_ = 1;
-      blocked_since_ = -1.0;
-      return;
+      repair_done();
+      taken();
+      return true;
     }
   }
+  return false;
 }
 
 void RobotAgent::check_source_route() {
@@ -265,9 +320,10 @@ void RobotAgent::check_source_route() {
                  route_.end());
     route_.insert(route_.end(), fixed.begin() + 1, fixed.end());
     set_source_waypoints(std::min(next, route_.size()));
-    blocked_since_ = -1.0;
+    repair_done();
     return;
   }
+  if (repair_out_) return;  // its Repair is out: wait for an answer (re-sent by repair_timers)
   RepairMessage m;
   m.source = s.id;
   m.num = (s.id.value << 16) | (++s.repair_counter & 0xFFFFu);
@@ -277,6 +333,9 @@ void RobotAgent::check_source_route() {
   m.broken_to = br->second;
   s.repairs_seen.insert(m.num);
   log_repair(false, "is blocked and asks its neighbours (Repair message)");
+  repair_out_ = m;
+  repair_resend_gap_ = opt().repair_resend_s;
+  repair_resend_at_ = repair_resend_gap_ > 0.0 ? now_ + repair_resend_gap_ : -1.0;
   broadcast(m, 1);
 }
 

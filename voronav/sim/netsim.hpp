@@ -115,6 +115,15 @@ struct NetSimOptions {
   int repair_hops = 2;            ///< Repair reaches neighbours up to this many hops
   double collect_s = 1.5;         ///< centralized: wait this long without new Ack before planning
   double repair_timeout_s = 8.0;  ///< decentralized: source re-searches when blocked this long
+  /// Decentralized, not in the paper (Tables 4–5 say nothing of lost or unanswered Repairs): the
+  /// source re-sends its Repair (the same Num, so robots that already had it stay silent, Table 4
+  /// line 1 "New Repair Message") when no answer came within this long, doubling the wait after
+  /// every re-send (exponential back-off) until repair_timeout_s [s]; 0 = never re-send.
+  double repair_resend_s = 1.0;
+  /// Decentralized, not in the paper: the source takes a Repair answer only when the repaired
+  /// route ahead is free in its own map (it has seen the change; the answerer's map may be older);
+  /// the first answer that passes wins, later ones are ignored (docs/reproductions/networked.md).
+  bool repair_check_answer = true;
   /// These options with the scale options the scale runs use (bench/netsim_bench.cpp):
   /// search_timeout_per_m 2.5, search_activity_s 30, keep_bridge_on_new_search,
   /// source_straight_start and walk_replan_whole_map (frontier_by_points stays as it is).

@@ -276,9 +276,10 @@ void RobotAgent::timers() {
     if (route_.empty() && now_ + 1e-9 >= search_deadline_ &&
         report_.search_attempts < opt().max_search_attempts)
       retry_search();
+    repair_timers();
     if (!route_.empty() && blocked_since_ >= 0.0 &&
         now_ - blocked_since_ >= opt().repair_timeout_s) {
-      blocked_since_ = -1.0;
+      repair_done();
       // No Repair answer: the source plans a way on its own map to the first route point past
       // the break (counted in replans); only when there is none it starts a new Search.
       const bool rp = replan_to_route();

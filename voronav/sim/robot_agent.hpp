@@ -233,8 +233,10 @@ class RobotAgent {
                                             std::uint32_t from, std::uint32_t to);
   void check_relay_route();
   void on(const network::Header& h, const network::RepairMessage& m);
-  void on_repair_path(network::PathMessage m);
-  void splice_route(const std::vector<network::VoronoiPoint>& whole);
+  void on_repair_path(network::PathMessage m, network::RobotId from);
+  bool splice_route(const std::vector<network::VoronoiPoint>& whole, network::RobotId from);
+  void repair_timers();
+  void repair_done();
   void check_source_route();
   bool replan_to_route();
   [[nodiscard]] std::uint32_t next_repair_num();
@@ -271,6 +273,12 @@ class RobotAgent {
   double source_walk_since_ = 0.0;
   std::vector<network::RobotId> handed_to_;
   std::uint32_t repair_seq_ = 0;
+  // Source: the Repair it waits an answer for, re-sent (same Num) with back-off (repair_resend_s).
+  std::optional<network::RepairMessage> repair_out_;
+  double repair_resend_at_ = -1.0;
+  double repair_resend_gap_ = 0.0;
+  // Relay: the ends of the break of its saved path it already asked about (asked once).
+  std::optional<std::pair<Vec2, Vec2>> relay_break_;
   bool collecting_ = false;
   double last_ack_ = 0.0;
 };

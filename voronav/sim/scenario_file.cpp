@@ -186,6 +186,8 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
            "repair_hops",
            "collect_s",
            "repair_timeout_s",
+           "repair_resend_s",
+           "repair_check_answer",
            "search_timeout_per_m",
            "search_activity_s",
            "keep_bridge_on_new_search",
@@ -226,6 +228,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   integer("repair_hops", o.repair_hops, 1, 255);
   pos("collect_s", o.collect_s);
   pos("repair_timeout_s", o.repair_timeout_s);
+  nonneg("repair_resend_s", o.repair_resend_s);
   nonneg("search_timeout_per_m", o.search_timeout_per_m);
   nonneg("search_activity_s", o.search_activity_s);
   auto flag = [&](const char* key, bool& v) {
@@ -233,6 +236,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   };
   flag("keep_bridge_on_new_search", o.keep_bridge_on_new_search);
   flag("source_straight_start", o.source_straight_start);
+  flag("repair_check_answer", o.repair_check_answer);
   flag("frontier_by_points", o.frontier_by_points);
   flag("walk_replan_whole_map", o.walk_replan_whole_map);
   if (const auto m = n["seed"]) o.seed = rd.integer<std::uint64_t>(m, "options.seed", 0, kMaxU64);
@@ -469,6 +473,8 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
       << "  repair_hops: " << o.repair_hops << "\n"
       << "  collect_s: " << fmt(o.collect_s) << "\n"
       << "  repair_timeout_s: " << fmt(o.repair_timeout_s) << "\n"
+      << "  repair_resend_s: " << fmt(o.repair_resend_s) << "\n"
+      << "  repair_check_answer: " << (o.repair_check_answer ? "true" : "false") << "\n"
       << "  search_timeout_per_m: " << fmt(o.search_timeout_per_m) << "\n"
       << "  search_activity_s: " << fmt(o.search_activity_s) << "\n"
       << "  keep_bridge_on_new_search: " << (o.keep_bridge_on_new_search ? "true" : "false") << "\n"

@@ -56,6 +56,8 @@ void expect_same_options(const NetSimOptions& a, const NetSimOptions& b) {
   EXPECT_EQ(a.repair_hops, b.repair_hops);
   EXPECT_EQ(a.collect_s, b.collect_s);
   EXPECT_EQ(a.repair_timeout_s, b.repair_timeout_s);
+  EXPECT_EQ(a.repair_resend_s, b.repair_resend_s);
+  EXPECT_EQ(a.repair_check_answer, b.repair_check_answer);
   EXPECT_EQ(a.search_timeout_per_m, b.search_timeout_per_m);
   EXPECT_EQ(a.search_activity_s, b.search_activity_s);
   EXPECT_EQ(a.keep_bridge_on_new_search, b.keep_bridge_on_new_search);
@@ -105,6 +107,8 @@ TEST(ScenarioFile, PaperRunWithEveryOptionSetRoundTripsExactly) {
   o.repair_hops = 3;
   o.collect_s = 2.25;
   o.repair_timeout_s = 9.5;
+  o.repair_resend_s = 2.5;
+  o.repair_check_answer = false;
   o.search_timeout_per_m = 2.75;
   o.search_activity_s = 31.5;
   o.keep_bridge_on_new_search = true;

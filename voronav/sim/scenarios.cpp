@@ -232,6 +232,39 @@ Ahead time_before(const Probe& p, const GridGeometry& g, const std::vector<Cell>
 
 }  // namespace
 
+namespace {
+
+/// Whether a run of `sc` with method `m` meets every change, each on the route ahead of its
+/// source when it happens (what the source counts in changes_on_route).
+bool changes_met(const NetSimScenario& sc, Method m) {
+  NetSimOptions o;
+  o.method = m;
+  const auto r = run_netsim(sc, o).metrics;
+  return r.changes_applied == static_cast<int>(sc.changes.size()) &&
+         r.changes_on_route == r.changes_applied;
+}
+
+/// The free cells of a square box of side `side_m` centred at q: a partial block (an object put
+/// down on the way), for where no door can close.
+std::vector<Cell> box_cells(const GridGeometry& g, const BinaryGrid& blocked, Vec2 q,
+                            double side_m) {
+  std::vector<Cell> out;
+  const auto c = g.world_to_cell(q);
+  if (!c) return out;
+  const int k = static_cast<int>(std::ceil(0.5 * side_m / g.resolution));
+  for (int dy = -k; dy <= k; ++dy)
+    for (int dx = -k; dx <= k; ++dx) {
+      const Cell d{c->x + dx, c->y + dy};
+      if (!g.contains(d) || blocked[d]) continue;
+      const Vec2 w = g.cell_center(d);
+      if (std::abs(w.x - q.x) <= 0.5 * side_m && std::abs(w.y - q.y) <= 0.5 * side_m)
+        out.push_back(d);
+    }
+  return out;
+}
+
+}  // namespace
+
 void time_changes_on_routes(const OfficeWorld& world, NetSimScenario& sc, int changes,
                             double every_s, double robot_radius_m) {
   sc.changes.clear();
@@ -241,45 +274,84 @@ void time_changes_on_routes(const OfficeWorld& world, NetSimScenario& sc, int ch
   const auto& g = world.grid.geometry();
   BinaryGrid changed = binarize(world.grid);
   const auto dest = g.world_to_cell(sc.destination);
-  // The same door for both methods, closing in front of each source: the last moment it is
-  // 2 m or more from the door before it drives through it. Closer than its 3 m sensing range,
-  // so its plan already goes through the door (the centralized plan through unknown space cuts
+  // The same place for both methods, closing in front of each source: the last moment it is
+  // `ahead` m or more from it before it drives through it. Closer than its 3 m sensing range,
+  // so its plan already goes through it (the centralized plan through unknown space cuts
   // corners beside a door it has not seen yet, and a change there would not be on its route),
-  // and far enough to stop (Repair, replan). Candidates in the order the decentralized source
-  // reaches them; each change after the previous one for both methods (every_s apart).
-  constexpr double kAheadM = 2.0;
+  // and far enough to stop (Repair, replan). Places: the doors both sources drive through; then,
+  // where no door can close without cutting off the destination (scenario 3), a 0.8 m box put
+  // down where both trajectories pass (a partial block: the way narrows or a detour is needed).
+  // Each candidate is checked by a centralized run with it (and the changes before it): it is
+  // kept only when every change is on the centralized route in use when it happens (the probe
+  // trajectory alone does not say where the centralized plan goes at that moment; the
+  // decentralized source drives its route points, so the probe says it; a decentralized check
+  // would cost a run of the slow method per candidate).
+  constexpr double kAhead[] = {2.0, 2.5, 3.0, 1.5};
+  constexpr double kBoxM = 0.8;
+  constexpr int kMaxTrials = 12;  // verification runs per change, at most
   struct Cand {
-    std::size_t door;
+    std::vector<Cell> cells;
     Ahead c, d;
+    bool box = false;  // a partial block, not a door
   };
-  std::vector<Cand> cands;
-  for (std::size_t i = 0; i < world.doors.size(); ++i) {
-    const double margin = robot_radius_m;  // a source driving through passes this close
-    const auto c = time_before(pc, g, world.doors[i].cells, margin, kAheadM);
-    const auto d = time_before(pd, g, world.doors[i].cells, margin, kAheadM);
-    if (c.t >= 0.0 && d.t >= 0.0) cands.push_back({i, c, d});
-  }
+  const double margin = robot_radius_m;  // a source driving through passes this close
+  auto add = [&](std::vector<Cand>& to, const std::vector<Cell>& cells, bool box) {
+    for (double ahead : kAhead) {
+      const auto c = time_before(pc, g, cells, margin, ahead);
+      const auto d = time_before(pd, g, cells, margin, ahead);
+      if (c.t >= 0.0 && d.t >= 0.0) to.push_back({cells, c, d, box});
+    }
+  };
+  std::vector<Cand> cands;  // doors, in the order the decentralized source reaches them
+  for (const auto& door : world.doors)
+    add(cands, door.cells, false);
   std::stable_sort(cands.begin(), cands.end(),
                    [](const Cand& a, const Cand& b) { return a.d.t < b.d.t; });
+  // Then boxes every 2 m along the decentralized route in use where the centralized source also
+  // passes within the robot radius.
+  double last = -1e9;
+  for (std::size_t i = 0; i < pd.pos.size(); ++i) {
+    if (pd.t[i] < pd.route_s + 0.5 || pd.along[i] < last + 2.0) continue;
+    const Vec2 q = pd.pos[i];
+    if (distance(q, sc.destination) < 1.5) break;
+    double near = 1e300;
+    for (std::size_t j = 0; j < pc.pos.size(); ++j)
+      if (pc.t[j] >= pc.route_s) near = std::min(near, distance(pc.pos[j], q));
+    if (near > robot_radius_m) continue;
+    last = pd.along[i];
+    const auto cells = box_cells(g, changed, q, kBoxM);
+    if (!cells.empty()) add(cands, cells, true);
+  }
   double last_c = -1e9, last_d = -1e9;
+  int trials = 0;
   for (const auto& cd : cands) {
     if (static_cast<int>(sc.changes.size()) >= changes) break;
     if (cd.c.t < last_c + every_s || cd.d.t < last_d + every_s) continue;
-    const auto& door = world.doors[cd.door];
+    bool used = false;
+    for (const auto& ch : sc.changes)
+      for (Cell c : cd.cells)
+        used |= std::find(ch.cells.begin(), ch.cells.end(), c) != ch.cells.end();
+    if (used) continue;
     BinaryGrid trial = changed;
-    for (Cell c : door.cells)
+    for (Cell c : cd.cells)
       trial[c] = 1;
     const auto pg = planning::make_planning_grid(trial, robot_radius_m + 0.1);
     const auto ca = g.world_to_cell(cd.c.pos), cb = g.world_to_cell(cd.d.pos);
     if (!ca || !cb || !dest || pg[*ca] || pg[*cb] || !truth_plan(pg, *ca, *dest).ok() ||
         !truth_plan(pg, *cb, *dest).ok())
       continue;
-    changed = std::move(trial);
+    if (trials >= kMaxTrials * changes) break;
     ObstacleChange ch;
     ch.at_s = cd.d.t;
     ch.centralized_at_s = cd.c.t;
-    ch.cells = door.cells;
+    ch.cells = cd.cells;
     sc.changes.push_back(std::move(ch));
+    ++trials;
+    if (!changes_met(sc, Method::kCentralized)) {
+      sc.changes.pop_back();
+      continue;
+    }
+    changed = std::move(trial);
     last_c = cd.c.t;
     last_d = cd.d.t;
   }

@@ -1,5 +1,6 @@
 // What the processes of a multi-process netsim run actually did (issue #19): each robot process
-// appends one JSON line per step to its trace file (its pose and the messages it sent), the world
+// appends one JSON line per step to its trace file (its pose, the messages it sent and the route
+// breaks it handled: Repair asked or executed), the world
 // process one line per fault or obstacle change; read_netsim_traces() joins them into the
 // sim::Recording the in-process run would have made, so the replay page and the ROS 2 bag show the
 // DDS run itself (not an in-process re-run). Lines are flushed at once, so a killed process leaves
@@ -22,8 +23,10 @@ class TraceFile {
  public:
   explicit TraceFile(const std::string& path);
   [[nodiscard]] bool on() const { return on_; }
-  /// Robot: its pose at step k (time t) and the messages it sent since the last line.
-  void robot_step(std::uint32_t k, double t, Vec2 p, const std::vector<sim::RecordedMessage>& sent);
+  /// Robot: its pose at step k (time t), the messages it sent and the route breaks it handled
+  /// (Repair asked or executed) since the last line.
+  void robot_step(std::uint32_t k, double t, Vec2 p, const std::vector<sim::RecordedMessage>& sent,
+                  const std::vector<sim::RecordedRepair>& repairs = {});
   /// Robot: the source's route at the end [m].
   void robot_route(const std::vector<Vec2>& route);
   /// World: an event (DdsEvent's fields).

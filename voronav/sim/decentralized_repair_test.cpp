@@ -1,0 +1,91 @@
+// Repair (seed 000, Tables 4–5; decentralized_repair.cpp): who answers a Repair and how the
+// source takes the answers. A hand-made hall where a block closes the route ahead of the source
+// and several robots know a way around it.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "voronav/sim/netsim.hpp"
+
+namespace voronav::sim {
+namespace {
+
+// A hall 30 x 8 m with robots in two rows every 3.5 m (y 2.5 and 5.5); the source is robot 0 at
+// (1.5, 2.5), the destination (28.5, 2.5). `at_s` after the first route a block closes the lower
+// half of the hall at x 20..20.8 m (y 0.4..4 m): the upper half (y 4..7.6 m) stays open, and
+// the robots of the upper row near the block know that way around it.
+NetSimScenario hall(double after_route_s) {
+  const double res = 0.2;
+  const int w = 150, h = 40;
+  NetSimScenario sc;
+  sc.world = OccupancyGrid(GridGeometry{w, h, res, {}}, kOccupied);
+  for (int y = 2; y < h - 2; ++y)
+    for (int x = 2; x < w - 2; ++x)
+      sc.world[Cell{x, y}] = kFree;
+  for (double x = 1.5; x < 29.0; x += 3.5) {
+    sc.robots.push_back({x, 2.5});
+    sc.robots.push_back({x, 5.5});
+  }
+  sc.destination = {28.5, 2.5};
+  ObstacleChange ch;
+  ch.after_route_s = after_route_s;
+  for (int y = 2; y < 20; ++y)
+    for (int x = 100; x < 104; ++x)
+      ch.cells.push_back({x, y});
+  sc.changes.push_back(ch);
+  return sc;
+}
+
+struct Counted {
+  NetSimResult res;
+  int repairs_sent = 0;     // Repair transmissions (the source's and relayed ones)
+  int answers_sent = 0;     // Path transmissions after the change (answers, relayed answers)
+  int executed_events = 0;  // detours taken into the route (recording)
+  int asked_events = 0;     // breaks that needed help (recording)
+  double change_s = 0.0;
+};
+
+Counted run(const NetSimOptions& base, double after_route_s) {
+  NetSimOptions o = base;
+  o.method = Method::kDecentralized;
+  o.record = true;
+  Counted c;
+  c.res = run_netsim(hall(after_route_s), o);
+  c.change_s = c.res.metrics.route_time_s + after_route_s;
+  for (const auto& m : c.res.recording.messages) {
+    if (m.type == network::MessageType::kRepair) ++c.repairs_sent;
+    if (m.type == network::MessageType::kPath && m.t_s >= c.change_s - 1e-9) ++c.answers_sent;
+  }
+  for (const auto& r : c.res.recording.repairs)
+    (r.executed ? c.executed_events : c.asked_events) += 1;
+  return c;
+}
+
+TEST(DecentralizedRepair, SeveralRobotsKnowADetourAndTheSourceTakesOneAnswer) {
+  const auto c = run(NetSimOptions{}, 12.0);
+  const auto& m = c.res.metrics;
+  ASSERT_TRUE(m.success);
+  EXPECT_EQ(m.changes_on_route, 1) << "the block is on the route ahead of the source";
+  EXPECT_EQ(m.search_attempts, 1) << "repaired without a new Search";
+  EXPECT_GE(m.repairs_executed, 1);
+  EXPECT_EQ(c.executed_events, m.repairs_executed);
+  // The relay next to the block asks (Repair); several robots know a way around it and answer
+  // or carry answers (Path messages from at least two robots after the change) ...
+  std::map<std::uint32_t, int> path_senders;
+  for (const auto& msg : c.res.recording.messages)
+    if (msg.type == network::MessageType::kPath && msg.t_s >= c.change_s - 1e-9)
+      ++path_senders[msg.from];
+  EXPECT_GE(path_senders.size(), 2u);
+  EXPECT_GE(c.asked_events, 1);
+  // ... but the source takes one answer: the first one wins, the others are ignored.
+  int taken = 0;
+  for (const auto& r : c.res.recording.repairs)
+    if (r.robot == 0 && r.what.find("takes robot") != std::string::npos) ++taken;
+  EXPECT_EQ(taken, 1);
+  // Every robot handles a Repair once (Table 4 line 1, "New Repair Message"): no robot sends
+  // the same Repair twice, so there are at most as many Repair transmissions as robots.
+  EXPECT_LE(c.repairs_sent, static_cast<int>(c.res.recording.steps.front().positions.size()));
+}
+
+}  // namespace
+}  // namespace voronav::sim
