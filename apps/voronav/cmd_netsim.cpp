@@ -208,6 +208,15 @@ void write_scenario(const NetsimArgs& a) {
   std::cout << "wrote " << a.write_scenario << "\n";
 }
 
+/// A run's transmissions by message type (all robots): {type: {messages, bytes}}; the trace
+/// that says which messages made the traffic (issue #13).
+nlohmann::json by_type_json(const sim::NetSimMetrics& m) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [name, c] : m.by_type)
+    out[name] = {{"messages", c.messages}, {"bytes", c.bytes}};
+  return out;
+}
+
 /// Per robot: travel, work and what it sent, by message type.
 nlohmann::json robots_json(const sim::NetSimMetrics& m) {
   nlohmann::json out = nlohmann::json::array();
@@ -427,6 +436,7 @@ void run(const NetsimArgs& a) {
                          {"replans", r.replans},
                          {"search_attempts", r.search_attempts},
                          {"repairs", r.repairs},
+                         {"sent_by_type", by_type_json(r)},
                          {"simulated_s", r.simulated_s},
                          {"robot_count", sc.robots.size()},
                          {"source", sc.source},
