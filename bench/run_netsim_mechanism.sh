@@ -3,16 +3,26 @@
 # for N = 1..4 and prints markdown tables that say which mechanism produced each result: who found
 # the route (route_found_by), Paths lost, Repairs executed, whether the obstacle changes hit the
 # route in use, the eq. 2 route length, the source's driving and the relays' driving, traffic with
-# and without changes. Usage: bench/run_netsim_mechanism.sh [build-dir] [runs (default 16)]
+# and without changes; then, per change run, the messages of each kind both methods sent (the
+# trace behind the traffic comparison).
+# Usage: bench/run_netsim_mechanism.sh [build-dir] [runs (default 16)] [folder to keep the JSON]
+# With a folder that already holds sN.json, those are read instead of running scenario N again.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/default}
 runs=${2:-16}
+keep=${3:-}
 cli=$build/bin/voronav
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+if [ -n "$keep" ]; then
+  mkdir -p "$keep"
+  tmp=$keep
+else
+  tmp=$(mktemp -d)
+  trap 'rm -rf "$tmp"' EXIT
+fi
 for s in 1 2 3 4; do
-  "$cli" netsim --scenario "$s" --runs "$runs" --method both --json > "$tmp/s$s.json"
+  [ -s "$tmp/s$s.json" ] && continue
+  "$cli" netsim --scenario "$s" --runs "$runs" --method both --json --quiet > "$tmp/s$s.json"
 done
 /usr/bin/python3 - "$tmp" <<'PY'
 import json, os, statistics, sys
@@ -21,8 +31,9 @@ print("| scenario | method | success | route by relays / source alone / none | P
       "Repairs executed | change runs with a change on the route | route eq. 2 [m] | "
       "source drove [m] | relays drove [m] | traffic no change [B] | traffic with changes [B] |")
 print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+data = {}
 for s in (1, 2, 3, 4):
-    j = json.load(open(os.path.join(d, f"s{s}.json")))
+    j = data[s] = json.load(open(os.path.join(d, f"s{s}.json")))
     for m in ("centralized", "decentralized"):
         v = j[m]
         runs = v["per_run"]
@@ -36,4 +47,20 @@ for s in (1, 2, 3, 4):
               f"{mean('route_length_m', ok):.1f} | {mean('source_travel_m', ok):.1f} | "
               f"{mean('relay_travel_m', ok):.1f} | {mean('traffic_bytes', nochange):.0f} | "
               f"{mean('traffic_bytes', change):.0f} |")
+print()
+print("Change runs: changes placed / on the route (centralized, decentralized), Repairs executed "
+      "(decentralized), traffic [B] and messages sent by kind (`kind count`, all robots).")
+print()
+print("| scenario | run | changes | on route c / d | Repairs executed | traffic c / d [B] | "
+      "centralized messages | decentralized messages |")
+print("|---|---|---|---|---|---|---|---|")
+kinds = lambda r: ", ".join(f"{k} {v['messages']}" for k, v in sorted(r.get("sent_by_type", {}).items())) or "?"
+for s, j in data.items():
+    cent = {r["run"]: r for r in j["centralized"]["per_run"]}
+    for r in j["decentralized"]["per_run"]:
+        if r["changes"] == 0:
+            continue
+        c = cent[r["run"]]
+        print(f"| {s} | {r['run']} | {r['changes']} | {c['changes_on_route']} / {r['changes_on_route']} | "
+              f"{r['repairs_executed']} | {c['traffic_bytes']} / {r['traffic_bytes']} | {kinds(c)} | {kinds(r)} |")
 PY
