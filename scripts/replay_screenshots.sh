@@ -32,6 +32,6 @@ shot() {  # page png fraction
 shot index.html coordination.png 0.35
 # Networked: after the obstacle change and the repair, the source on the repaired route.
 shot netsim.html netsim.png 0.8
-# Exploration: part-way, the map revealed so far and the Voronoi tree being followed.
-shot explore.html exploration.png 0.5
+# Exploration: after the first tree (400 s of 600 s), the map revealed so far and the tree being followed.
+shot explore.html exploration.png 0.8
 ls -l "$out"
