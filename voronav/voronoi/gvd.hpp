@@ -188,6 +188,9 @@ class DynamicGvd {
   bool update_labels(const std::vector<std::size_t>& added, const std::vector<std::size_t>& removed,
                      std::vector<std::size_t>* relabeled);
   [[nodiscard]] bool raw_mark(std::size_t i) const;
+  // During update(): whether the key (d2, index) order of raw cell c and one of its raw
+  // 8-neighbours differs from before the update.
+  [[nodiscard]] bool key_order_flipped(std::size_t c) const;
   void build_skeleton();
   [[nodiscard]] double max_spur() const;
   [[nodiscard]] const std::vector<std::uint8_t>& skel() const;
@@ -209,6 +212,7 @@ class DynamicGvd {
   std::vector<std::int32_t> visit_;       // scratch of the split search (-1)
   std::vector<std::uint8_t> mark_;        // scratch marks (0)
   std::vector<std::uint8_t> d2_changed_;  // scratch of update(): the distance changed (0)
+  std::vector<std::int64_t> old_d2_;      // scratch of update(): d2 before it changed
   std::vector<std::uint8_t> raw_;
   std::vector<internal::ParallelThinning> thins_;  // thin, then (prune, thin) per round
   std::vector<internal::ParallelPruning> prunes_;

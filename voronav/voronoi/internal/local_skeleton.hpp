@@ -75,8 +75,8 @@ class ParallelThinning {
   // Scratch for update().
   struct Rec {
     std::size_t cell;
-    std::uint8_t old_in;
-    std::int32_t old_removed_at;
+    std::uint8_t old_in, new_in;
+    std::int32_t old_removed_at, new_removed_at;
     std::int32_t x, y;  // coordinates (no division in the step loop)
   };
   std::vector<Rec> recs_, perm_;
