@@ -276,7 +276,8 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
     near_.assign(in.size(), 0);
     epoch_ = 0;
   }
-  std::vector<std::size_t> dirty;
+  std::vector<std::size_t>& dirty = dirty_;  // scratch vectors keep their capacity
+  dirty.clear();
   for (const Delta& d : in_changes)
     dirty.push_back(d.cell);
   for (const std::size_t k : key_changes)  // the clearance matters at junctions only
@@ -302,8 +303,11 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
     std::fill(near_.begin(), near_.end(), 0U);
     epoch_ = 1;
   }
-  std::vector<std::size_t> touched, candidates;
-  std::vector<std::pair<std::size_t, int>> queue;
+  std::vector<std::size_t>&touched = touched_, &candidates = candidates_;
+  std::vector<std::pair<std::size_t, int>>& queue = queue_;
+  touched.clear();
+  candidates.clear();
+  queue.clear();
   for (const std::size_t d : dirty)
     around(d, [&](std::size_t c) {
       if (near_[c] == epoch_) return;  // the neighbourhoods of nearby dirty cells overlap
@@ -338,7 +342,7 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   }
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  std::vector<std::size_t> path;
+  std::vector<std::size_t>& path = path_;
   for (const std::size_t e : candidates) {
     if (!in[e] || owner_[e] >= 0 || skeleton_degree(in, r_, e) != 1) continue;
     if (!walk(in, e, max_len, path)) continue;
@@ -350,8 +354,7 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   }
   for (const Delta& d : in_changes)
     touched.push_back(d.cell);
-  std::sort(touched.begin(), touched.end());
-  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  // A cell listed twice is equal to out_ the second time (no sort needed).
   std::vector<Delta> out;
   for (const std::size_t c : touched) {
     const std::uint8_t now = in[c] && owner_[c] < 0 ? 1 : 0;
