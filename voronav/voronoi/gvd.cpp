@@ -837,6 +837,8 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     }
   for (const std::size_t c : changed)
     d2_changed_[c] = 0;
+  stats.key_changes = keys.size();
+  stats.thin_key_changes = thin_keys.size();
   if (!thins_.empty()) {
     deltas = thins_[0].update(raw_, deltas, d2_, thin_keys, &stats.skeleton_work);
     for (std::size_t k = 0; k < prunes_.size(); ++k) {

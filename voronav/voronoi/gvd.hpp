@@ -39,7 +39,8 @@
 //    the cells whose site lies in a relabeled component;
 //  - thinning and pruning: order-independent versions (internal/local_skeleton.hpp: a
 //    subfield-parallel thinning automaton whose whole run is stored, and spur pruning of all ends
-//    at once), replayed only where their input or the clearance changed.
+//    at once), replayed only where their input or the clearance changed (for the thinning, which
+//    compares the clearances of 8-neighbours only: where the order of two raw neighbours flipped).
 // The result is identical to a full rebuild (tested on random change sequences with merges and
 // splits), and the cost follows the size of the change, not of the map.
 #pragma once
@@ -120,6 +121,8 @@ struct GvdUpdateStats {
   bool labels_repartitioned = false;  ///< a merge or split of obstacle components happened
   std::size_t row_cells = 0;          ///< cells of the row segments recomputed by the envelope
   std::size_t changed_raw = 0;        ///< cells whose raw Voronoi mark changed
+  std::size_t key_changes = 0;        ///< raw cells whose clearance changed (read by the pruning)
+  std::size_t thin_key_changes = 0;   ///< ... of which flip the order of two raw neighbours
   std::size_t skeleton_work = 0;      ///< cells the local re-thinning and re-pruning examined
   std::size_t changed_diagram = 0;    ///< cells of the final diagram that changed
   int thinning_steps = 0;             ///< steps of the longest stored thinning run
