@@ -8,7 +8,8 @@
 // lab_intel (data/floorplans); maps that are missing are skipped. Counters of the update runs
 // say which mechanism did the work: rows and row cells of the EDT, cells whose distance or site
 // changed, cells the re-thinning and re-pruning examined, steps of the longest stored thinning
-// run, label repartitions (merges/splits) per change.
+// run, label repartitions (merges/splits) per change, raw cells whose clearance changed and those
+// of them that flip the clearance order of two raw neighbours (the thinning replays only these).
 // bench/topology_dynamic.sh turns the JSON output into bench/results/topology_dynamic.md.
 #include <benchmark/benchmark.h>
 
@@ -74,6 +75,7 @@ void update(benchmark::State& state, const BinaryGrid* map) {
   std::vector<voronoi::CellChange> changes(9);
   std::size_t k = 0;
   double rows = 0, row_cells = 0, skel = 0, repart = 0, changes_done = 0, steps = 0, dist = 0;
+  double keys = 0, thin_keys = 0;
   auto apply = [&](Cell c, bool add) {
     int n = 0;
     for (int dy = -1; dy <= 1; ++dy)
@@ -86,6 +88,8 @@ void update(benchmark::State& state, const BinaryGrid* map) {
     repart += st.labels_repartitioned ? 1.0 : 0.0;
     steps += st.thinning_steps;
     dist += static_cast<double>(st.changed_distances);
+    keys += static_cast<double>(st.key_changes);
+    thin_keys += static_cast<double>(st.thin_key_changes);
     changes_done += 1.0;
   };
   for (auto _ : state) {
@@ -104,6 +108,8 @@ void update(benchmark::State& state, const BinaryGrid* map) {
   state.counters["repartitions_per_change"] = repart / changes_done;
   state.counters["thinning_steps"] = steps / changes_done;
   state.counters["changed_distances_per_change"] = dist / changes_done;
+  state.counters["key_changes_per_change"] = keys / changes_done;
+  state.counters["thin_key_changes_per_change"] = thin_keys / changes_done;
 }
 
 }  // namespace

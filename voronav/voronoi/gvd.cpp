@@ -278,7 +278,7 @@ void DynamicGvd::row_segment(int y, int xa, int xb, std::vector<std::size_t>* ch
     const std::int32_t s = ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_[pidx(ax, y)]));
     if (d2_[i] == d[k] && site_[i] == s) continue;
     changed->push_back(i);
-    if (d2_[i] != d[k]) d2_changed_[i] = 1;
+    if (d2_[i] != d[k]) d2_changed_[i] = 1, old_d2_[i] = d2_[i];
     d2_[i] = d[k];
     site_[i] = s;
   }
@@ -307,7 +307,7 @@ void DynamicGvd::row_lower(int y, int xa, int xb, const std::vector<int>& cols,
     }
     if (bd == d2_[i] && bs == site_[i]) continue;
     changed->push_back(i);
-    if (bd != d2_[i]) d2_changed_[i] = 1;
+    if (bd != d2_[i]) d2_changed_[i] = 1, old_d2_[i] = d2_[i];
     d2_[i] = bd;
     site_[i] = bs;
   }
@@ -670,6 +670,7 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     visit_.assign(state_.size(), -1);
     mark_.assign(state_.size(), 0);
     d2_changed_.assign(state_.size(), 0);
+    old_d2_.assign(state_.size(), 0);
   }
 
   // Distance field: recompute the touched columns between the nearest obstacles above and below
@@ -823,25 +824,49 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
   }
   stats.changed_raw = deltas.size();
 
-  // Thinning and pruning, replayed where their input or the clearance changed.
-  std::vector<std::size_t> keys;
-  for (const std::size_t c : changed)  // every stage's input is a subset of the raw diagram
-    if (d2_changed_[c]) {
-      if (raw_[c]) keys.push_back(c);
-      d2_changed_[c] = 0;
+  // Thinning and pruning, replayed where their input or the clearance changed. Every stage's
+  // input is a subset of the raw diagram. The pruning reads the clearance of junctions (keys);
+  // the thinning compares the keys of 8-neighbours only, so a key change matters to it only
+  // where the order of the cell and a raw 8-neighbour flipped (thin_keys): in an open hall most
+  // clearances on the diagram change by about the same amount and keep their order.
+  std::vector<std::size_t> keys, thin_keys;
+  for (const std::size_t c : changed)
+    if (d2_changed_[c] && raw_[c]) {
+      keys.push_back(c);
+      if (key_order_flipped(c)) thin_keys.push_back(c);
     }
+  for (const std::size_t c : changed)
+    d2_changed_[c] = 0;
+  stats.key_changes = keys.size();
+  stats.thin_key_changes = thin_keys.size();
   if (!thins_.empty()) {
-    deltas = thins_[0].update(raw_, deltas, d2_, keys, &stats.skeleton_work);
+    deltas = thins_[0].update(raw_, deltas, d2_, thin_keys, &stats.skeleton_work);
     for (std::size_t k = 0; k < prunes_.size(); ++k) {
       deltas =
           prunes_[k].update(thins_[k].out(), deltas, d2_, keys, max_spur(), &stats.skeleton_work);
-      deltas = thins_[k + 1].update(prunes_[k].out(), deltas, d2_, keys, &stats.skeleton_work);
+      deltas = thins_[k + 1].update(prunes_[k].out(), deltas, d2_, thin_keys, &stats.skeleton_work);
     }
   }
   stats.changed_diagram = deltas.size();
   for (const auto& t : thins_)
     stats.thinning_steps = std::max(stats.thinning_steps, t.steps());
   return stats;
+}
+
+bool DynamicGvd::key_order_flipped(std::size_t c) const {
+  // Keys are (d2, index); the old key of a cell is old_d2_ where d2_changed_ is set.
+  const auto old_key = [&](std::size_t i) { return d2_changed_[i] ? old_d2_[i] : d2_[i]; };
+  const std::int64_t oc = old_key(c), nc = d2_[c];
+  const internal::PaddedRaster r{pw_, ph_};
+  for (int k = 0; k < 8; ++k) {
+    const auto n = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + r.offset(k));
+    if (!raw_[n]) continue;
+    const std::int64_t on = old_key(n), nn = d2_[n];
+    const bool was_less = oc != on ? oc < on : c < n;
+    const bool is_less = nc != nn ? nc < nn : c < n;
+    if (was_less != is_less) return true;
+  }
+  return false;
 }
 
 std::int64_t DynamicGvd::squared_clearance(Cell c) const {

@@ -39,7 +39,8 @@
 //    the cells whose site lies in a relabeled component;
 //  - thinning and pruning: order-independent versions (internal/local_skeleton.hpp: a
 //    subfield-parallel thinning automaton whose whole run is stored, and spur pruning of all ends
-//    at once), replayed only where their input or the clearance changed.
+//    at once), replayed only where their input or the clearance changed (for the thinning, which
+//    compares the clearances of 8-neighbours only: where the order of two raw neighbours flipped).
 // The result is identical to a full rebuild (tested on random change sequences with merges and
 // splits), and the cost follows the size of the change, not of the map.
 #pragma once
@@ -120,6 +121,8 @@ struct GvdUpdateStats {
   bool labels_repartitioned = false;  ///< a merge or split of obstacle components happened
   std::size_t row_cells = 0;          ///< cells of the row segments recomputed by the envelope
   std::size_t changed_raw = 0;        ///< cells whose raw Voronoi mark changed
+  std::size_t key_changes = 0;        ///< raw cells whose clearance changed (read by the pruning)
+  std::size_t thin_key_changes = 0;   ///< ... of which flip the order of two raw neighbours
   std::size_t skeleton_work = 0;      ///< cells the local re-thinning and re-pruning examined
   std::size_t changed_diagram = 0;    ///< cells of the final diagram that changed
   int thinning_steps = 0;             ///< steps of the longest stored thinning run
@@ -188,6 +191,9 @@ class DynamicGvd {
   bool update_labels(const std::vector<std::size_t>& added, const std::vector<std::size_t>& removed,
                      std::vector<std::size_t>* relabeled);
   [[nodiscard]] bool raw_mark(std::size_t i) const;
+  // During update(): whether the key (d2, index) order of raw cell c and one of its raw
+  // 8-neighbours differs from before the update.
+  [[nodiscard]] bool key_order_flipped(std::size_t c) const;
   void build_skeleton();
   [[nodiscard]] double max_spur() const;
   [[nodiscard]] const std::vector<std::uint8_t>& skel() const;
@@ -209,6 +215,7 @@ class DynamicGvd {
   std::vector<std::int32_t> visit_;       // scratch of the split search (-1)
   std::vector<std::uint8_t> mark_;        // scratch marks (0)
   std::vector<std::uint8_t> d2_changed_;  // scratch of update(): the distance changed (0)
+  std::vector<std::int64_t> old_d2_;      // scratch of update(): d2 before it changed
   std::vector<std::uint8_t> raw_;
   std::vector<internal::ParallelThinning> thins_;  // thin, then (prune, thin) per round
   std::vector<internal::ParallelPruning> prunes_;

@@ -424,5 +424,34 @@ TEST(DynamicGvd, SmallChangeRecomputesFewRows) {
   EXPECT_EQ(dyn.update(changes).changed_cells, 0U);  // no-op
 }
 
+TEST(DynamicGvd, ThinningReplaysOnlyClearanceOrderFlips) {
+  // An open hall with a few pillars; a 3x3 block appears and goes. Most raw cells whose clearance
+  // changes keep their clearance order with their raw neighbours, so the thinning replays fewer
+  // key changes than the pruning reads; the result still equals a full rebuild.
+  BinaryGrid g(GridGeometry{120, 90, 0.05, {}}, 0);
+  for (const Cell p : {Cell{30, 20}, Cell{85, 25}, Cell{60, 70}})
+    for (int dy = 0; dy < 2; ++dy)
+      for (int dx = 0; dx < 2; ++dx)
+        g[p + Cell{dx, dy}] = 1;
+  DynamicGvd dyn(g);
+  std::vector<CellChange> changes;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx)
+      changes.push_back({{47 + dx, 41 + dy}, true});
+  const GvdUpdateStats st = dyn.update(changes);
+  EXPECT_GT(st.thin_key_changes, 0U);
+  EXPECT_LT(st.thin_key_changes, st.key_changes);
+  for (CellChange& c : changes)
+    g[c.cell] = 1;
+  expect_equal(dyn.snapshot(), build_gvd(g), "block added");
+  for (CellChange& c : changes) {
+    c.blocked = false;
+    g[c.cell] = 0;
+  }
+  const GvdUpdateStats back = dyn.update(changes);
+  EXPECT_LT(back.thin_key_changes, back.key_changes);
+  expect_equal(dyn.snapshot(), build_gvd(g), "block removed");
+}
+
 }  // namespace
 }  // namespace voronav::voronoi

@@ -114,15 +114,22 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
   const auto uw = static_cast<std::size_t>(r_.width);
   std::vector<Rec>& recs = recs_;
   recs.clear();
-  auto touch = [&](std::size_t c, std::uint8_t old_in) {
-    if (rec_of_[c] >= 0) return;
+  // The records mirror the new state of their cells (new_in, new_removed_at), so the scan of
+  // the records at every step reads no per-cell array.
+  auto touch = [&](std::size_t c, std::uint8_t old_in) -> Rec& {
+    if (rec_of_[c] >= 0) return recs[static_cast<std::size_t>(rec_of_[c])];
     rec_of_[c] = static_cast<std::int32_t>(recs.size());
-    recs.push_back({c, old_in, removed_at_[c], static_cast<std::int32_t>(c % uw),
-                    static_cast<std::int32_t>(c / uw)});
+    recs.push_back({c, old_in, in[c], removed_at_[c], removed_at_[c],
+                    static_cast<std::int32_t>(c % uw), static_cast<std::int32_t>(c / uw)});
+    return recs.back();
+  };
+  auto set_removed_at = [&](std::size_t c, std::int32_t t) {
+    touch(c, in[c]).new_removed_at = t;
+    removed_at_[c] = t;
   };
   for (const Delta& d : in_changes) {
     touch(d.cell, d.old_value);
-    removed_at_[d.cell] = kNever;  // decided again below
+    set_removed_at(d.cell, kNever);  // decided again below
   }
   // Cells of the set whose key changed: dirty at every step while they are alive (the key of a
   // dead cell is never read again, so it leaves the list).
@@ -131,7 +138,7 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
   for (const std::size_t k : key_changes)
     if (in[k]) {
       perm.push_back(
-          {k, 1, 0, static_cast<std::int32_t>(k % uw), static_cast<std::int32_t>(k / uw)});
+          {k, 1, 1, 0, 0, static_cast<std::int32_t>(k % uw), static_cast<std::int32_t>(k / uw)});
     }
 
   std::vector<std::size_t>& cand = cand_;
@@ -161,7 +168,7 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
     for (std::size_t k = 0; k < nrec; ++k) {
       const Rec& rec = recs[k];
       const bool old_alive = rec.old_in && rec.old_removed_at >= t;
-      const bool new_alive = in[rec.cell] && removed_at_[rec.cell] >= t;
+      const bool new_alive = rec.new_in && rec.new_removed_at >= t;
       if (old_alive == new_alive) continue;
       any_diff = true;
       add_around(rec.cell, rec.x, rec.y);
@@ -176,13 +183,9 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
       if (work) ++*work;
       if (removable(in, c, t)) {
         removed = true;
-        if (removed_at_[c] != t) {
-          touch(c, in[c]);
-          removed_at_[c] = t;
-        }
+        if (removed_at_[c] != t) set_removed_at(c, t);
       } else if (removed_at_[c] == t) {
-        touch(c, in[c]);
-        removed_at_[c] = kNever;
+        set_removed_at(c, kNever);
       }
     }
     if (removed) {
@@ -273,7 +276,8 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
     near_.assign(in.size(), 0);
     epoch_ = 0;
   }
-  std::vector<std::size_t> dirty;
+  std::vector<std::size_t>& dirty = dirty_;  // scratch vectors keep their capacity
+  dirty.clear();
   for (const Delta& d : in_changes)
     dirty.push_back(d.cell);
   for (const std::size_t k : key_changes)  // the clearance matters at junctions only
@@ -299,8 +303,11 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
     std::fill(near_.begin(), near_.end(), 0U);
     epoch_ = 1;
   }
-  std::vector<std::size_t> touched, candidates;
-  std::vector<std::pair<std::size_t, int>> queue;
+  std::vector<std::size_t>&touched = touched_, &candidates = candidates_;
+  std::vector<std::pair<std::size_t, int>>& queue = queue_;
+  touched.clear();
+  candidates.clear();
+  queue.clear();
   for (const std::size_t d : dirty)
     around(d, [&](std::size_t c) {
       if (near_[c] == epoch_) return;  // the neighbourhoods of nearby dirty cells overlap
@@ -335,7 +342,7 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   }
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  std::vector<std::size_t> path;
+  std::vector<std::size_t>& path = path_;
   for (const std::size_t e : candidates) {
     if (!in[e] || owner_[e] >= 0 || skeleton_degree(in, r_, e) != 1) continue;
     if (!walk(in, e, max_len, path)) continue;
@@ -347,8 +354,7 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   }
   for (const Delta& d : in_changes)
     touched.push_back(d.cell);
-  std::sort(touched.begin(), touched.end());
-  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  // A cell listed twice is equal to out_ the second time (no sort needed).
   std::vector<Delta> out;
   for (const std::size_t c : touched) {
     const std::uint8_t now = in[c] && owner_[c] < 0 ? 1 : 0;

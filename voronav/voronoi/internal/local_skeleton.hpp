@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "voronav/voronoi/internal/skeleton.hpp"
@@ -75,8 +76,8 @@ class ParallelThinning {
   // Scratch for update().
   struct Rec {
     std::size_t cell;
-    std::uint8_t old_in;
-    std::int32_t old_removed_at;
+    std::uint8_t old_in, new_in;
+    std::int32_t old_removed_at, new_removed_at;
     std::int32_t x, y;  // coordinates (no division in the step loop)
   };
   std::vector<Rec> recs_, perm_;
@@ -117,6 +118,8 @@ class ParallelPruning {
   std::unordered_map<std::size_t, std::vector<std::size_t>> spurs_;  // end -> removed path
   std::vector<std::uint32_t> seen_;  // scratch of update(): queued cells
   std::vector<std::uint32_t> near_;  // scratch of update(): cells near a dirty one, visited
+  std::vector<std::size_t> dirty_, touched_, candidates_, path_;  // scratch of update()
+  std::vector<std::pair<std::size_t, int>> queue_;
   std::uint32_t epoch_ = 0;
 };
 
