@@ -437,6 +437,76 @@ TEST(Search, GaIsDeterministicPerSeed) {
   EXPECT_THROW((void)search_priority(net, so), Error);
 }
 
+// The GA's incremental 3-opt evaluation (issue #16) must equal a full resolve() bit for bit: same
+// delays, completions, makespan and sum (or a cut exactly when the makespan exceeds the cutoff).
+TEST(MdNetwork, MoveEvaluatorEqualsFullResolveBitwise) {
+  int cuts = 0, kept = 0, blocked = 0, partial = 0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const int n = 25;
+    MdNetwork net = random_network(n, 90, seed);
+    if (seed % 2 == 0) {  // boxes no start delay resolves in one orientation
+      net.add_box(1, 7, 3.0, kInfinity);
+      net.add_box(12, 4, 2.0, kInfinity);
+    }
+    MoveEvaluator ev(net);
+    std::mt19937_64 rng(seed);
+    auto uniform = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    std::vector<int> order(static_cast<std::size_t>(n));
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), rng);
+    Resolution base = resolve(net, order);
+    for (int it = 0; it < 300; ++it) {
+      const int i = uniform(0, n - 1);
+      const int j = uniform(i, std::min(n - 1, i + uniform(0, n - 1)));
+      const int len = j - i + 1;
+      if (len >= n) continue;
+      const int k = uniform(0, n - len);
+      if (k == i) continue;
+      std::vector<int> rest;
+      for (int p = 0; p < n; ++p) {
+        if (p < i || p > j) rest.push_back(order[static_cast<std::size_t>(p)]);
+      }
+      std::vector<int> cand(rest.begin(), rest.begin() + k);
+      cand.insert(cand.end(), order.begin() + i, order.begin() + j + 1);
+      cand.insert(cand.end(), rest.begin() + k, rest.end());
+      const int from = std::min(i, k), to = std::max(j + 1, k + len);
+      const Resolution full = resolve(net, cand);
+      const Resolution r = ev.resolve_move(order, base, cand, from, to, kInfinity);
+      ASSERT_EQ(r.status, full.status) << seed << " move " << it;
+      ASSERT_FALSE(r.cut);
+      EXPECT_EQ(r.delays, full.delays) << seed << " move " << it;
+      EXPECT_EQ(r.completion, full.completion);
+      EXPECT_EQ(r.makespan, full.makespan);
+      EXPECT_EQ(r.sum_of_arrivals, full.sum_of_arrivals);
+      EXPECT_EQ(r.blocked, full.blocked);
+      blocked += full.status != ResolveStatus::kOk ? 1 : 0;
+      partial += ev.last_resolved() < n - from ? 1 : 0;
+      // With the GA's cutoff: a cut exactly when the full makespan exceeds it.
+      const double cutoff = base.makespan + 1e-9;
+      const Resolution c = ev.resolve_move(order, base, cand, from, to, cutoff);
+      const bool over = full.status == ResolveStatus::kOk && full.makespan > cutoff;
+      ASSERT_EQ(c.cut, over) << seed << " move " << it;
+      if (c.cut) {
+        ++cuts;
+      } else {
+        EXPECT_EQ(c.delays, full.delays);
+        EXPECT_EQ(c.sum_of_arrivals, full.sum_of_arrivals);
+      }
+      if (full.status == ResolveStatus::kOk &&
+          (base.status != ResolveStatus::kOk || better(full, base))) {
+        order = cand;  // walk like the 3-opt: the next moves start from the better order
+        base = full;
+        ++kept;
+      }
+    }
+  }
+  // Every branch was exercised: cuts, accepted moves, unresolvable orders, partial re-resolution.
+  EXPECT_GT(cuts, 100);
+  EXPECT_GT(kept, 10);
+  EXPECT_GT(blocked, 10);
+  EXPECT_GT(partial, 100);
+}
+
 // ---------------------------------------------------------------- property test
 
 std::vector<Agent> random_scenario(std::mt19937& rng, int n) {
