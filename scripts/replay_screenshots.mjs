@@ -1,12 +1,9 @@
 // Screenshot of one replay page in headless Chromium (the browser test's machinery), paused at a
-// chosen fraction of the recording. Used by scripts/replay_screenshots.sh.
+// chosen fraction of the recording. Used by scripts/replay_screenshots.sh (which copies it next to
+// the shared launch module tests/browser/chromium.mjs).
 // Usage: node replay_screenshots.mjs PAGE.html OUT.png FRACTION [WIDTH HEIGHT]
 // Prints one JSON line: {"out": ..., "time": ..., "start": ..., "end": ...}.
-import { chromium } from "playwright-core";
-import fs from "node:fs";
-import os from "node:os";
-import path from "node:path";
-import { pathToFileURL } from "node:url";
+import { launchChromium, openReplay } from "./chromium.mjs";
 
 const [pagePath, outPath, fracArg, wArg, hArg] = process.argv.slice(2);
 if (!pagePath || !outPath) {
@@ -19,19 +16,9 @@ if (!(frac >= 0 && frac <= 1)) {
   process.exit(2);
 }
 const width = Number(wArg || 1280), height = Number(hArg || 860);
-const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), "voronav-shot-"));
-const context = await chromium.launchPersistentContext(userDataDir, {
-  executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
-  headless: true,
-  args: ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-dev-shm-usage",
-         "--disable-background-networking", "--disable-component-update", "--disable-sync"],
-  viewport: { width, height },
-  deviceScaleFactor: 1,
-});
+const { page, close } = await launchChromium({ width, height });
 try {
-  const page = context.pages()[0] || (await context.newPage());
-  await page.goto(pathToFileURL(path.resolve(pagePath)).href);
-  await page.waitForFunction(() => window.voronav && window.voronav.ready, null, { timeout: 60000 });
+  await openReplay(page, pagePath);
   const st = await page.evaluate((f) => {
     const v = window.voronav;
     v.pause();
@@ -43,6 +30,5 @@ try {
   await page.screenshot({ path: outPath, fullPage: false });
   console.log(JSON.stringify({ out: outPath, time: st.time, start: st.start, end: st.end }));
 } finally {
-  await context.close();
-  fs.rmSync(userDataDir, { recursive: true, force: true });
+  await close();
 }

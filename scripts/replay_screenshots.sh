@@ -11,14 +11,8 @@ build=$(cd "${1:-$root/build/default}" && pwd)
 bin="$build/bin/voronav"
 demo=${2:-}
 [ -x "$bin" ] || { echo "replay_screenshots.sh: $bin not found; build voronav_cli first" >&2; exit 1; }
-[ -x "${CHROMIUM:-/usr/bin/chromium}" ] || { echo "replay_screenshots.sh: chromium missing (apt-get install chromium)" >&2; exit 1; }
 node_dir="$build/tests/browser-test"
-if [ ! -d "$node_dir/node_modules/playwright-core" ]; then
-  mkdir -p "$node_dir"
-  cp "$root/tests/browser/package.json" "$root/tests/browser/package-lock.json" "$node_dir/"
-  (cd "$node_dir" && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error)
-fi
-cp "$root/scripts/replay_screenshots.mjs" "$node_dir/"
+bash "$root/tests/browser/prepare.sh" "$node_dir" "$root/scripts/replay_screenshots.mjs"
 if [ -z "$demo" ]; then
   demo="$build/replay-shots/demo"
   rm -rf "$demo"
@@ -38,6 +32,6 @@ shot() {  # page png fraction
 shot index.html coordination.png 0.35
 # Networked: after the obstacle change and the repair, the source on the repaired route.
 shot netsim.html netsim.png 0.8
-# Exploration: part-way, the map revealed so far and the Voronoi tree being followed.
-shot explore.html exploration.png 0.5
+# Exploration: after the first tree (400 s of 600 s), the map revealed so far and the tree being followed.
+shot explore.html exploration.png 0.8
 ls -l "$out"

@@ -1,34 +1,15 @@
 #!/usr/bin/env bash
 # End-to-end browser test of the replay page (issue 9).
 # Usage: tests/browser/run.sh VORONAV_BINARY BUILD_DIR
-# Installs Debian's chromium when missing (apt-get; as root or via sudo), installs playwright-core
-# from the pinned package-lock.json with `npm ci` into BUILD_DIR/browser-test when node_modules is
-# missing there (never downloads browsers), generates a page with `voronav replay --example`, and
-# runs replay.test.mjs against it. The screenshot lands in BUILD_DIR/browser-test/replay.png.
+# Sets up BUILD_DIR/browser-test with prepare.sh (Debian's chromium when missing, playwright-core
+# from the pinned package-lock.json, the shared launch module chromium.mjs), generates a page
+# with `voronav replay --example`, and runs replay.test.mjs against it. The screenshot lands in BUILD_DIR/browser-test/replay.png.
 set -euo pipefail
 bin=${1:?usage: run.sh VORONAV_BINARY BUILD_DIR}
 build=${2:?usage: run.sh VORONAV_BINARY BUILD_DIR}
 here=$(cd "$(dirname "$0")" && pwd)
 work="$build/browser-test"
-mkdir -p "$work"
-
-if [ ! -x /usr/bin/chromium ] && [ -z "${CHROMIUM:-}" ]; then
-  echo "run.sh: installing Debian's chromium"
-  SUDO=""
-  if [ "$(id -u)" -ne 0 ]; then
-    command -v sudo >/dev/null || { echo "run.sh: chromium missing; run as root or install it" >&2; exit 1; }
-    SUDO=sudo
-  fi
-  export DEBIAN_FRONTEND=noninteractive
-  $SUDO apt-get install -y -qq --no-install-recommends chromium ||
-    { $SUDO apt-get update -qq && $SUDO apt-get install -y -qq --no-install-recommends chromium; }
-fi
-command -v node >/dev/null || { echo "run.sh: node (Debian: nodejs npm) is required" >&2; exit 1; }
-
-cp "$here/package.json" "$here/package-lock.json" "$here/replay.test.mjs" "$work/"
-if [ ! -d "$work/node_modules/playwright-core" ]; then
-  (cd "$work" && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error)
-fi
+bash "$here/prepare.sh" "$work" "$here/replay.test.mjs"
 
 rm -rf "$work/page"
 "$bin" replay --example --out "$work/page" >/dev/null
@@ -43,7 +24,8 @@ PY
 rm -rf "$work/minimal"
 "$bin" replay --recording "$work/minimal.json" --out "$work/minimal" >/dev/null
 # A crowded exploration-style recording: 60 robots on a 120 x 80 map that is revealed over time
-# (reveal times grow with the distance from the start), with a tree that appears at t = 5 s.
+# (reveal times grow with the distance from the start), with a tree that appears at t = 5 s and
+# 40 repeated requests 0.1 s apart (dense events).
 python3 - "$work/many.json" <<'PY'
 import json, math, sys
 W, H, res, n = 120, 80, 0.25, 60
@@ -69,7 +51,8 @@ json.dump({"format": "voronav-recording", "version": 1, "title": "many robots",
            "graphs": [{"name": "tree", "shown_from": 5.0, "nodes": [{"id": 0, "p": [3, 3]}, {"id": 1, "p": [20, 15]}], "edges": [[0, 1]]}],
            "robots": robots,
            "markers": [{"kind": "goal", "p": [25, 16], "robot": 1, "label": "goal of robot 1"}],
-           "events": [{"t": 5.0, "kind": "tree", "text": "the tree is built"}]},
+           "events": [{"t": 5.0, "kind": "tree", "text": "the tree is built"}] +
+                     [{"t": 10.0 + 0.1 * k, "kind": "blocked", "text": "robot 3 asks for a detour", "robot": 3} for k in range(40)]},
           open(sys.argv[1], "w"))
 PY
 rm -rf "$work/many"
