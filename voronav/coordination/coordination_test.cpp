@@ -8,6 +8,7 @@
 
 #include "voronav/coordination/collision_map.hpp"
 #include "voronav/coordination/coordinator.hpp"
+#include "voronav/coordination/internal/ga_operators.hpp"
 #include "voronav/coordination/md_network.hpp"
 #include "voronav/coordination/paper_networks.hpp"
 #include "voronav/coordination/priority_search.hpp"
@@ -509,6 +510,70 @@ TEST(MdNetwork, MoveEvaluatorEqualsFullResolveBitwise) {
   EXPECT_GT(kept, 10);
   EXPECT_GT(blocked, 10);
   EXPECT_GT(partial, 100);
+}
+
+// The GA operators shared by the delay GA and the SIPP GA (internal/ga_operators.hpp).
+TEST(GaOperators, ChildrenArePermutationsKeepingWhatTheyMust) {
+  const int n = 12;
+  internal::GaRng rng(5);
+  std::vector<double> weight(static_cast<std::size_t>(n * n), 0.0);
+  weight[static_cast<std::size_t>(3 * n + 9)] = 5.0;  // 3 -> 9 is the heaviest edge out of 3
+  const internal::GaOperators ops(n, weight);
+  auto is_perm = [&](std::vector<int> v) {
+    std::sort(v.begin(), v.end());
+    for (int k = 0; k < n; ++k)
+      if (v[static_cast<std::size_t>(k)] != k) return false;
+    return static_cast<int>(v.size()) == n;
+  };
+  int moves = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<int> a(static_cast<std::size_t>(n)), b(static_cast<std::size_t>(n));
+    std::iota(a.begin(), a.end(), 0);
+    std::shuffle(a.begin(), a.end(), rng);
+    std::iota(b.begin(), b.end(), 0);
+    std::shuffle(b.begin(), b.end(), rng);
+    // DPX: every edge common to both parents is in the child.
+    const std::vector<int> c = ops.dpx(a, b, rng);
+    ASSERT_TRUE(is_perm(c));
+    const auto sa = ops.successors(a), sb = ops.successors(b), sc = ops.successors(c);
+    for (int v = 0; v < n; ++v) {
+      if (sa[static_cast<std::size_t>(v)] >= 0 &&
+          sa[static_cast<std::size_t>(v)] == sb[static_cast<std::size_t>(v)]) {
+        EXPECT_EQ(sc[static_cast<std::size_t>(v)], sa[static_cast<std::size_t>(v)]);
+      }
+    }
+    EXPECT_TRUE(is_perm(ops.mutate(a, 4, 7, rng)));
+    // Segment move: a permutation that differs from the parent only inside [from, to).
+    std::vector<int> cand;
+    int from = -1, to = -1;
+    if (!internal::GaOperators::segment_move(a, rng, cand, from, to)) continue;
+    ++moves;
+    ASSERT_TRUE(is_perm(cand));
+    ASSERT_LE(0, from);
+    ASSERT_LT(from, to);
+    ASSERT_LE(to, n);
+    EXPECT_NE(cand, a);
+    for (int p = 0; p < n; ++p) {
+      if (p < from || p >= to) {
+        EXPECT_EQ(cand[static_cast<std::size_t>(p)], a[static_cast<std::size_t>(p)]);
+      }
+    }
+  }
+  EXPECT_GT(moves, 100);
+  // Greedy reconnection: the parents share no edge (every fragment is one node) and neither has
+  // 3 -> 9, the only weighted edge; so whenever 9 is still free when 3 is placed, 9 follows 3.
+  const std::vector<int> p1{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
+  const std::vector<int> p2{11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0};
+  int followed = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::vector<int> c = ops.dpx(p1, p2, rng);
+    const auto at = [&](int v) { return std::find(c.begin(), c.end(), v) - c.begin(); };
+    if (at(9) > at(3)) {
+      EXPECT_EQ(at(9), at(3) + 1);
+      ++followed;
+    }
+  }
+  EXPECT_GT(followed, 5);
 }
 
 // ---------------------------------------------------------------- property test

@@ -111,6 +111,7 @@ std::vector<int> GaOperators::mutate(const std::vector<int>& seq, int min_edges,
 bool GaOperators::segment_move(const std::vector<int>& seq, GaRng& rng, std::vector<int>& cand,
                                int& from, int& to) {
   const int n = static_cast<int>(seq.size());
+  if (n < 2) return false;
   const int i = uniform(rng, 0, n - 1);
   const int j = uniform(rng, i, std::min(n - 1, i + uniform(rng, 0, n - 1)));
   const int len = j - i + 1;
