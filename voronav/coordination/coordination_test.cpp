@@ -505,6 +505,15 @@ TEST(MdNetwork, MoveEvaluatorEqualsFullResolveBitwise) {
       }
     }
   }
+  // Orders that are not permutations are refused.
+  const MdNetwork net = random_network(4, 6, 1);
+  MoveEvaluator ev(net);
+  const std::vector<int> good{0, 1, 2, 3};
+  const Resolution base = resolve(net, good);
+  EXPECT_THROW((void)ev.resolve_move(good, base, std::vector<int>{0, 1, 1, 3}, 1, 3, kInfinity),
+               Error);
+  EXPECT_THROW((void)ev.resolve_move(good, base, std::vector<int>{0, 1, 4, 3}, 1, 3, kInfinity),
+               Error);
   // Every branch was exercised: cuts, accepted moves, unresolvable orders, partial re-resolution.
   EXPECT_GT(cuts, 100);
   EXPECT_GT(kept, 10);

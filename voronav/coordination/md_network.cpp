@@ -296,9 +296,20 @@ Resolution MoveEvaluator::resolve_move(std::span<const int> base_order, const Re
   }
   from = std::clamp(from, 0, n);
   to = std::clamp(to, from, n);
+  // Both orders must be permutations of 0..n-1 (a repeated robot leaves a rank that does not
+  // point back to its position).
   for (int p = 0; p < n; ++p) {
-    rank_old_[static_cast<std::size_t>(base_order[static_cast<std::size_t>(p)])] = p;
-    rank_new_[static_cast<std::size_t>(order[static_cast<std::size_t>(p)])] = p;
+    const int o = base_order[static_cast<std::size_t>(p)], c = order[static_cast<std::size_t>(p)];
+    if (o < 0 || o >= n || c < 0 || c >= n)
+      throw Error("order", 0,
+                  "not a permutation: robot " + std::to_string(o < 0 || o >= n ? o : c));
+    rank_old_[static_cast<std::size_t>(o)] = p;
+    rank_new_[static_cast<std::size_t>(c)] = p;
+  }
+  for (int p = 0; p < n; ++p) {
+    const int o = base_order[static_cast<std::size_t>(p)], c = order[static_cast<std::size_t>(p)];
+    if (rank_old_[static_cast<std::size_t>(o)] != p || rank_new_[static_cast<std::size_t>(c)] != p)
+      throw Error("order", 0, "not a permutation: a robot appears twice");
   }
   std::fill(dirty_.begin(), dirty_.end(), 0);
   // Robots in [from, to) with a neighbour on the other side than before.

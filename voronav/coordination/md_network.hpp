@@ -107,7 +107,8 @@ struct Resolution {
 ///  - a higher neighbour's delay differs from its delay in `base` (bitwise);
 /// every other robot keeps its delay from `base`. Stops (Resolution::cut, makespan infinity) as
 /// soon as a completion time exceeds `cutoff`: such an order cannot beat one of makespan <= cutoff.
-/// Otherwise the result equals resolve(net, order) bitwise (tested).
+/// Otherwise the result equals resolve(net, order) bitwise (tested). Throws voronav::Error when
+/// an order is not a permutation of the robots.
 class MoveEvaluator {
  public:
   explicit MoveEvaluator(const MdNetwork& net);
