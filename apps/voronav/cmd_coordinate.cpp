@@ -231,7 +231,8 @@ void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::
   opt.ga.seed = a.seed;
   opt.ga.time_limit_s = a.sipp_ga_time_limit;
   const co::SippCoordinationResult r = co::coordinate_sipp(blocked, agents, opt);
-  const co::IndividualBounds lb = co::individual_bounds(blocked, agents);
+  const co::IndividualBounds lb =
+      r.bounds.travel.size() == agents.size() ? r.bounds : co::individual_bounds(blocked, agents);
   const bool ok = r.plan.ok;
   nlohmann::json js_agents = nlohmann::json::array();
   for (std::size_t i = 0; i < agents.size(); ++i) {

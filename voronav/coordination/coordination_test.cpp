@@ -8,6 +8,7 @@
 
 #include "voronav/coordination/collision_map.hpp"
 #include "voronav/coordination/coordinator.hpp"
+#include "voronav/coordination/internal/ga_operators.hpp"
 #include "voronav/coordination/md_network.hpp"
 #include "voronav/coordination/paper_networks.hpp"
 #include "voronav/coordination/priority_search.hpp"
@@ -435,6 +436,153 @@ TEST(Search, GaIsDeterministicPerSeed) {
   EXPECT_THROW((void)parse_search_kind("tabu"), Error);
   so.ga.mutation_rate = 2.0;
   EXPECT_THROW((void)search_priority(net, so), Error);
+}
+
+// The GA's incremental 3-opt evaluation (issue #16) must equal a full resolve() bit for bit: same
+// delays, completions, makespan and sum (or a cut exactly when the makespan exceeds the cutoff).
+TEST(MdNetwork, MoveEvaluatorEqualsFullResolveBitwise) {
+  int cuts = 0, kept = 0, blocked = 0, partial = 0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const int n = 25;
+    MdNetwork net = random_network(n, 90, seed);
+    if (seed % 2 == 0) {  // boxes no start delay resolves in one orientation
+      net.add_box(1, 7, 3.0, kInfinity);
+      net.add_box(12, 4, 2.0, kInfinity);
+    }
+    MoveEvaluator ev(net);
+    std::mt19937_64 rng(seed);
+    auto uniform = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    std::vector<int> order(static_cast<std::size_t>(n));
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), rng);
+    Resolution base = resolve(net, order);
+    for (int it = 0; it < 300; ++it) {
+      const int i = uniform(0, n - 1);
+      const int j = uniform(i, std::min(n - 1, i + uniform(0, n - 1)));
+      const int len = j - i + 1;
+      if (len >= n) continue;
+      const int k = uniform(0, n - len);
+      if (k == i) continue;
+      std::vector<int> rest;
+      for (int p = 0; p < n; ++p) {
+        if (p < i || p > j) rest.push_back(order[static_cast<std::size_t>(p)]);
+      }
+      std::vector<int> cand(rest.begin(), rest.begin() + k);
+      cand.insert(cand.end(), order.begin() + i, order.begin() + j + 1);
+      cand.insert(cand.end(), rest.begin() + k, rest.end());
+      const int from = std::min(i, k), to = std::max(j + 1, k + len);
+      const Resolution full = resolve(net, cand);
+      const Resolution r = ev.resolve_move(order, base, cand, from, to, kInfinity);
+      ASSERT_EQ(r.status, full.status) << seed << " move " << it;
+      ASSERT_FALSE(r.cut);
+      EXPECT_EQ(r.delays, full.delays) << seed << " move " << it;
+      EXPECT_EQ(r.completion, full.completion);
+      EXPECT_EQ(r.makespan, full.makespan);
+      EXPECT_EQ(r.sum_of_arrivals, full.sum_of_arrivals);
+      EXPECT_EQ(r.blocked, full.blocked);
+      blocked += full.status != ResolveStatus::kOk ? 1 : 0;
+      partial += ev.last_resolved() < n - from ? 1 : 0;
+      // With the GA's cutoff: a cut when the full makespan exceeds it; an order no delay
+      // resolves may also be cut (some robot above the blocked one exceeded the cutoff first).
+      const double cutoff = base.makespan + 1e-9;
+      const Resolution c = ev.resolve_move(order, base, cand, from, to, cutoff);
+      if (full.status == ResolveStatus::kOk) {
+        ASSERT_EQ(c.cut, full.makespan > cutoff) << seed << " move " << it;
+      }
+      if (c.cut) {
+        ++cuts;
+        EXPECT_EQ(c.makespan, kInfinity);
+      } else {
+        EXPECT_EQ(c.status, full.status);
+        EXPECT_EQ(c.delays, full.delays);
+        EXPECT_EQ(c.sum_of_arrivals, full.sum_of_arrivals);
+      }
+      if (full.status == ResolveStatus::kOk &&
+          (base.status != ResolveStatus::kOk || better(full, base))) {
+        order = cand;  // walk like the 3-opt: the next moves start from the better order
+        base = full;
+        ++kept;
+      }
+    }
+  }
+  // Orders that are not permutations are refused.
+  const MdNetwork net = random_network(4, 6, 1);
+  MoveEvaluator ev(net);
+  const std::vector<int> good{0, 1, 2, 3};
+  const Resolution base = resolve(net, good);
+  EXPECT_THROW((void)ev.resolve_move(good, base, std::vector<int>{0, 1, 1, 3}, 1, 3, kInfinity),
+               Error);
+  EXPECT_THROW((void)ev.resolve_move(good, base, std::vector<int>{0, 1, 4, 3}, 1, 3, kInfinity),
+               Error);
+  // Every branch was exercised: cuts, accepted moves, unresolvable orders, partial re-resolution.
+  EXPECT_GT(cuts, 100);
+  EXPECT_GT(kept, 10);
+  EXPECT_GT(blocked, 10);
+  EXPECT_GT(partial, 100);
+}
+
+// The GA operators shared by the delay GA and the SIPP GA (internal/ga_operators.hpp).
+TEST(GaOperators, ChildrenArePermutationsKeepingWhatTheyMust) {
+  const int n = 12;
+  internal::GaRng rng(5);
+  std::vector<double> weight(static_cast<std::size_t>(n * n), 0.0);
+  weight[static_cast<std::size_t>(3 * n + 9)] = 5.0;  // 3 -> 9 is the heaviest edge out of 3
+  const internal::GaOperators ops(n, weight);
+  auto is_perm = [&](std::vector<int> v) {
+    std::sort(v.begin(), v.end());
+    for (int k = 0; k < n; ++k)
+      if (v[static_cast<std::size_t>(k)] != k) return false;
+    return static_cast<int>(v.size()) == n;
+  };
+  int moves = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<int> a(static_cast<std::size_t>(n)), b(static_cast<std::size_t>(n));
+    std::iota(a.begin(), a.end(), 0);
+    std::shuffle(a.begin(), a.end(), rng);
+    std::iota(b.begin(), b.end(), 0);
+    std::shuffle(b.begin(), b.end(), rng);
+    // DPX: every edge common to both parents is in the child.
+    const std::vector<int> c = ops.dpx(a, b, rng);
+    ASSERT_TRUE(is_perm(c));
+    const auto sa = ops.successors(a), sb = ops.successors(b), sc = ops.successors(c);
+    for (int v = 0; v < n; ++v) {
+      if (sa[static_cast<std::size_t>(v)] >= 0 &&
+          sa[static_cast<std::size_t>(v)] == sb[static_cast<std::size_t>(v)]) {
+        EXPECT_EQ(sc[static_cast<std::size_t>(v)], sa[static_cast<std::size_t>(v)]);
+      }
+    }
+    EXPECT_TRUE(is_perm(ops.mutate(a, 4, 7, rng)));
+    // Segment move: a permutation that differs from the parent only inside [from, to).
+    std::vector<int> cand;
+    int from = -1, to = -1;
+    if (!internal::GaOperators::segment_move(a, rng, cand, from, to)) continue;
+    ++moves;
+    ASSERT_TRUE(is_perm(cand));
+    ASSERT_LE(0, from);
+    ASSERT_LT(from, to);
+    ASSERT_LE(to, n);
+    EXPECT_NE(cand, a);
+    for (int p = 0; p < n; ++p) {
+      if (p < from || p >= to) {
+        EXPECT_EQ(cand[static_cast<std::size_t>(p)], a[static_cast<std::size_t>(p)]);
+      }
+    }
+  }
+  EXPECT_GT(moves, 100);
+  // Greedy reconnection: the parents share no edge (every fragment is one node) and neither has
+  // 3 -> 9, the only weighted edge; so whenever 9 is still free when 3 is placed, 9 follows 3.
+  const std::vector<int> p1{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
+  const std::vector<int> p2{11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0};
+  int followed = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::vector<int> c = ops.dpx(p1, p2, rng);
+    const auto at = [&](int v) { return std::find(c.begin(), c.end(), v) - c.begin(); };
+    if (at(9) > at(3)) {
+      EXPECT_EQ(at(9), at(3) + 1);
+      ++followed;
+    }
+  }
+  EXPECT_GT(followed, 5);
 }
 
 // ---------------------------------------------------------------- property test

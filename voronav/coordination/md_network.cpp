@@ -131,11 +131,76 @@ void check_order(std::span<const int> order, int n) {
 
 namespace {
 
-/// resolve() starting at position `from` with the delays of order[0..from) taken from `base`;
-/// stops (cut = true) as soon as a completion time exceeds `cutoff`.
+/// The delay of robot i given its higher-priority boxes `act` (M, D with the other robot above,
+/// no delays; hd = the other robot's delay), starting from `delay` (section 3.2.2, repeated until
+/// no box moves i). A box whose D after the delays is <= epsilon stays so for every larger delay:
+/// it is dropped from later passes (it could never fire again, so the sequence of shifts, and the
+/// result, are unchanged). On an unresolvable box (D infinite) sets r.status / blocked.
+template <class ArcT>
+double resolve_robot(double delay, ArcT* act, std::size_t count, int& blocked_by) {
+  blocked_by = -1;
+  // A pass after a shift can stop at the box that made the last shift, when nothing shifted the
+  // robot before it: the boxes after that one were already checked at this delay in the previous
+  // pass. The shifts, and so the result, are exactly those of complete passes.
+  std::size_t stop = count;
+  bool changed = true;
+  while (changed) {
+    changed = false;
+    std::size_t keep = 0;
+    std::size_t last = 0;
+    for (std::size_t q = 0; q < count; ++q) {
+      if (!changed && q == stop) return delay;
+      const ArcT e = act[q];
+      const double m = e.m + delay - e.hd;
+      const double d = e.d - delay + e.hd;
+      // Branch-free compaction: the box stays for the next pass iff D > epsilon.
+      const bool live = d > kTimeEpsilon;
+      act[keep] = e;
+      keep += live ? 1U : 0U;
+      if (live && m > kTimeEpsilon) {
+        if (std::isinf(d)) {
+          blocked_by = e.j;
+          return delay;
+        }
+        delay += d;
+        changed = true;
+        last = keep - 1;
+      }
+    }
+    count = keep;
+    stop = last + 1;
+  }
+  return delay;
+}
+
+struct HdArc {
+  double m, d, hd;
+  int j;
+};
+
+/// Makespan and sum of arrivals from the completions (infinite unless status is ok).
+void finish(Resolution& r) {
+  r.makespan = 0.0;
+  r.sum_of_arrivals = 0.0;
+  for (const double c : r.completion) {
+    r.makespan = std::max(r.makespan, c);
+    r.sum_of_arrivals += c;
+  }
+  if (r.status != ResolveStatus::kOk) {
+    r.makespan = kInfinity;
+    r.sum_of_arrivals = kInfinity;
+  }
+}
+
+void cut(Resolution& r) {
+  r.cut = true;
+  r.makespan = kInfinity;
+  r.sum_of_arrivals = kInfinity;
+}
+
+/// resolve(); stops (cut) as soon as a completion time exceeds `cutoff`.
 Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
-                        std::span<const double> min_delays, const Resolution* base, int from,
-                        double cutoff, int to = -1) {
+                        std::span<const double> min_delays, double cutoff) {
   const int n = net.size();
   Resolution r;
   r.delays.assign(static_cast<std::size_t>(n), 0.0);
@@ -143,49 +208,11 @@ Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
   std::vector<int> rank(static_cast<std::size_t>(n), 0);
   for (int p = 0; p < n; ++p)
     rank[static_cast<std::size_t>(order[static_cast<std::size_t>(p)])] = p;
-  for (int p = 0; p < from; ++p) {
-    const auto i = static_cast<std::size_t>(order[static_cast<std::size_t>(p)]);
-    r.delays[i] = base->delays[i];
-    r.completion[i] = base->completion[i];
-  }
-  // With `to`: differs[j] = robot j's delay is not base's (bitwise).
-  std::vector<char> differs;
-  if (base != nullptr && to > from) differs.assign(static_cast<std::size_t>(n), 0);
   const auto& boxes = net.boxes();
-  struct Arc {
-    double m, d, hd;
-    int j;
-  };
-  std::vector<Arc> act;
-  for (int p = from; p < n; ++p) {
+  std::vector<HdArc> act;
+  for (int p = 0; p < n; ++p) {
     const int i = order[static_cast<std::size_t>(p)];
-    if (!differs.empty()) {
-      if (p < to) {
-        differs[static_cast<std::size_t>(i)] = 1;  // its set of higher robots may have changed
-      } else {
-        bool stale = false;
-        for (const int k : net.incident(i)) {
-          const MdBox& b = boxes[static_cast<std::size_t>(k)];
-          const int j = b.a == i ? b.b : b.a;
-          if (rank[static_cast<std::size_t>(j)] < p && differs[static_cast<std::size_t>(j)]) {
-            stale = true;
-            break;
-          }
-        }
-        if (!stale) {
-          r.delays[static_cast<std::size_t>(i)] = base->delays[static_cast<std::size_t>(i)];
-          r.completion[static_cast<std::size_t>(i)] = base->completion[static_cast<std::size_t>(i)];
-          if (r.completion[static_cast<std::size_t>(i)] > cutoff) {
-            r.cut = true;
-            r.makespan = kInfinity;
-            r.sum_of_arrivals = kInfinity;
-            return r;
-          }
-          continue;
-        }
-      }
-    }
-    double delay =
+    const double delay0 =
         min_delays.empty() ? 0.0 : std::max(0.0, min_delays[static_cast<std::size_t>(i)]);
     // The boxes shared with higher robots, in incident order: (M, D) oriented with j above i
     // (MdNetwork::oriented, inlined with the same arithmetic), j's delay.
@@ -197,55 +224,23 @@ Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
       act.push_back(
           {j == b.b ? b.d : b.m, j == b.b ? b.m : b.d, r.delays[static_cast<std::size_t>(j)], j});
     }
-    // Passes until no box moves i (the delay only grows). A box whose D after the delays is
-    // <= epsilon stays so for every larger delay: it is dropped from later passes (it could
-    // never fire again, so the sequence of shifts, and the result, are unchanged).
-    bool changed = true;
-    while (changed && r.status == ResolveStatus::kOk) {
-      changed = false;
-      std::size_t keep = 0;
-      for (std::size_t q = 0; q < act.size(); ++q) {
-        const Arc& e = act[q];
-        const double m = e.m + delay - e.hd;
-        const double d = e.d - delay + e.hd;
-        if (!(d > kTimeEpsilon)) continue;
-        act[keep++] = e;
-        if (m > kTimeEpsilon) {
-          if (std::isinf(d)) {
-            r.status = ResolveStatus::kNoDelaySchedule;
-            r.blocked = i;
-            r.blocked_by = e.j;
-            break;
-          }
-          delay += d;
-          changed = true;
-        }
-      }
-      if (r.status == ResolveStatus::kOk) act.resize(keep);
+    int blocked_by = -1;
+    const double delay = resolve_robot(delay0, act.data(), act.size(), blocked_by);
+    if (blocked_by >= 0) {
+      r.status = ResolveStatus::kNoDelaySchedule;
+      r.blocked = i;
+      r.blocked_by = blocked_by;
     }
     r.delays[static_cast<std::size_t>(i)] = delay;
     r.completion[static_cast<std::size_t>(i)] =
         net.travel_times()[static_cast<std::size_t>(i)] + delay;
-    if (!differs.empty() && p >= to)
-      differs[static_cast<std::size_t>(i)] = delay != base->delays[static_cast<std::size_t>(i)];
     if (r.status != ResolveStatus::kOk) break;
     if (r.completion[static_cast<std::size_t>(i)] > cutoff) {
-      r.cut = true;
-      r.makespan = kInfinity;
-      r.sum_of_arrivals = kInfinity;
+      cut(r);
       return r;
     }
   }
-  r.makespan = 0.0;
-  r.sum_of_arrivals = 0.0;
-  for (int i = 0; i < n; ++i) {
-    r.makespan = std::max(r.makespan, r.completion[static_cast<std::size_t>(i)]);
-    r.sum_of_arrivals += r.completion[static_cast<std::size_t>(i)];
-  }
-  if (r.status != ResolveStatus::kOk) {
-    r.makespan = kInfinity;
-    r.sum_of_arrivals = kInfinity;
-  }
+  finish(r);
   return r;
 }
 
@@ -258,15 +253,134 @@ Resolution resolve(const MdNetwork& net, std::span<const int> order,
   if (!min_delays.empty() && static_cast<int>(min_delays.size()) != n) {
     throw Error("min_delays", 0, "expected one delay per robot");
   }
-  return resolve_impl(net, order, min_delays, nullptr, 0, kInfinity);
+  return resolve_impl(net, order, min_delays, kInfinity);
 }
 
-Resolution resolve_incremental(const MdNetwork& net, std::span<const int> order,
-                               const Resolution& base, int from, double cutoff, int to) {
-  if (base.status != ResolveStatus::kOk || base.delays.size() != order.size())
-    return resolve_impl(net, order, {}, nullptr, 0, cutoff);
-  return resolve_impl(net, order, {}, &base, std::clamp<int>(from, 0, net.size()), cutoff,
-                      to > from ? std::min<int>(to, net.size()) : -1);
+MoveEvaluator::MoveEvaluator(const MdNetwork& net) : net_(net) {
+  const int n = net.size();
+  const auto& boxes = net.boxes();
+  std::vector<int> last_seen(static_cast<std::size_t>(n), -1);
+  for (int i = 0; i < n; ++i) {
+    arc_begin_.push_back(static_cast<int>(arcs_.size()));
+    nbr_begin_.push_back(static_cast<int>(nbrs_.size()));
+    for (const int k : net.incident(i)) {
+      const MdBox& b = boxes[static_cast<std::size_t>(k)];
+      const int j = b.a == i ? b.b : b.a;
+      arcs_.push_back({j, j == b.b ? b.d : b.m, j == b.b ? b.m : b.d});
+      if (last_seen[static_cast<std::size_t>(j)] != i) {
+        last_seen[static_cast<std::size_t>(j)] = i;
+        nbrs_.push_back(j);
+      }
+    }
+  }
+  arc_begin_.push_back(static_cast<int>(arcs_.size()));
+  nbr_begin_.push_back(static_cast<int>(nbrs_.size()));
+  rank_old_.assign(static_cast<std::size_t>(n), 0);
+  rank_new_.assign(static_cast<std::size_t>(n), 0);
+  dirty_.assign(static_cast<std::size_t>(n), 0);
+  int most = 0;
+  for (int i = 0; i < n; ++i)
+    most = std::max(most, arc_begin_[static_cast<std::size_t>(i) + 1] -
+                              arc_begin_[static_cast<std::size_t>(i)]);
+  act_.resize(static_cast<std::size_t>(most) + 1);
+}
+
+Resolution MoveEvaluator::resolve_move(std::span<const int> base_order, const Resolution& base,
+                                       std::span<const int> order, int from, int to,
+                                       double cutoff) {
+  const int n = net_.size();
+  if (base.status != ResolveStatus::kOk || base.delays.size() != order.size() ||
+      base_order.size() != order.size()) {
+    last_resolved_ = n;
+    return resolve_impl(net_, order, {}, cutoff);
+  }
+  from = std::clamp(from, 0, n);
+  to = std::clamp(to, from, n);
+  // Both orders must be permutations of 0..n-1 (a repeated robot leaves a rank that does not
+  // point back to its position).
+  for (int p = 0; p < n; ++p) {
+    const int o = base_order[static_cast<std::size_t>(p)], c = order[static_cast<std::size_t>(p)];
+    if (o < 0 || o >= n || c < 0 || c >= n)
+      throw Error("order", 0,
+                  "not a permutation: robot " + std::to_string(o < 0 || o >= n ? o : c));
+    rank_old_[static_cast<std::size_t>(o)] = p;
+    rank_new_[static_cast<std::size_t>(c)] = p;
+  }
+  for (int p = 0; p < n; ++p) {
+    const int o = base_order[static_cast<std::size_t>(p)], c = order[static_cast<std::size_t>(p)];
+    if (rank_old_[static_cast<std::size_t>(o)] != p || rank_new_[static_cast<std::size_t>(c)] != p)
+      throw Error("order", 0, "not a permutation: a robot appears twice");
+  }
+  std::fill(dirty_.begin(), dirty_.end(), 0);
+  // Robots in [from, to) with a neighbour on the other side than before.
+  for (int p = from; p < to; ++p) {
+    const auto i = static_cast<std::size_t>(order[static_cast<std::size_t>(p)]);
+    const int ro = rank_old_[i];
+    for (int q = nbr_begin_[i]; q < nbr_begin_[i + 1]; ++q) {
+      const auto j = static_cast<std::size_t>(nbrs_[static_cast<std::size_t>(q)]);
+      if ((rank_new_[j] < p) != (rank_old_[j] < ro)) {
+        dirty_[i] = 1;
+        break;
+      }
+    }
+  }
+  Resolution r;
+  r.delays = base.delays;
+  r.completion = base.completion;
+  last_resolved_ = 0;
+  // Raw pointers: the loop below is the GA's hot spot (no reloads through the members).
+  const Arc* arcs = arcs_.data();
+  const int* arc_begin = arc_begin_.data();
+  const int* nbrs = nbrs_.data();
+  const int* nbr_begin = nbr_begin_.data();
+  const int* rank = rank_new_.data();
+  char* dirty = dirty_.data();
+  Active* act = act_.data();
+  double* delays = r.delays.data();
+  double* completion = r.completion.data();
+  const double* travel = net_.travel_times().data();
+  for (int p = from; p < n; ++p) {
+    const int i = order[static_cast<std::size_t>(p)];
+    const auto ui = static_cast<std::size_t>(i);
+    if (!dirty[ui]) continue;
+    ++last_resolved_;
+    // The boxes shared with higher robots, in incident order (branch-free filter).
+    std::size_t count = 0;
+    for (int q = arc_begin[ui]; q < arc_begin[ui + 1]; ++q) {
+      const Arc& a = arcs[q];
+      const auto j = static_cast<std::size_t>(a.j);
+      act[count] = {a.m, a.d, delays[j], a.j};
+      count += rank[j] < p ? 1U : 0U;
+    }
+    int blocked_by = -1;
+    const double delay = resolve_robot(0.0, act, count, blocked_by);
+    delays[ui] = delay;
+    completion[ui] = travel[ui] + delay;
+    if (blocked_by >= 0) {
+      r.status = ResolveStatus::kNoDelaySchedule;
+      r.blocked = i;
+      r.blocked_by = blocked_by;
+      for (int q = p + 1; q < n; ++q) {  // as resolve(): nothing below is resolved
+        const auto k = static_cast<std::size_t>(order[static_cast<std::size_t>(q)]);
+        delays[k] = 0.0;
+        completion[k] = 0.0;
+      }
+      break;
+    }
+    if (completion[ui] > cutoff) {
+      cut(r);
+      return r;
+    }
+    if (delay != base.delays[ui]) {
+      for (int q = nbr_begin[ui]; q < nbr_begin[ui + 1]; ++q) {
+        const auto j = static_cast<std::size_t>(nbrs[q]);
+        dirty[j] = static_cast<char>(dirty[j] | (rank[j] > p ? 1 : 0));
+      }
+    }
+  }
+  finish(r);
+  if (r.status == ResolveStatus::kOk && r.makespan > cutoff) cut(r);
+  return r;
 }
 
 std::vector<OrientedArc> network_for_order(const MdNetwork& net, std::span<const int> order,

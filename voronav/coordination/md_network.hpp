@@ -87,7 +87,7 @@ struct Resolution {
   double sum_of_arrivals = 0.0;
   int blocked = -1;     ///< with kNoDelaySchedule: the robot that cannot be delayed out of it
   int blocked_by = -1;  ///< ... and the higher-priority robot of that arc
-  bool cut = false;     ///< resolve_incremental stopped early (makespan above the cutoff)
+  bool cut = false;     ///< MoveEvaluator::resolve_move stopped early (makespan above the cutoff)
 };
 
 /// Resolves `order` (a permutation of 0..N-1, highest priority first). `min_delays`, when given,
@@ -95,18 +95,48 @@ struct Resolution {
 [[nodiscard]] Resolution resolve(const MdNetwork& net, std::span<const int> order,
                                  std::span<const double> min_delays = {});
 
-/// Incremental resolve() for the GA's 3-opt (issue #16): `base` is the resolution of an order
-/// whose first `from` entries equal `order`'s, so their delays are reused (a robot's delay depends
-/// only on the robots above it). Stops as soon as some completion time exceeds `cutoff`
-/// (Resolution::cut, makespan infinity): such an order cannot beat one of makespan <= cutoff.
-/// Otherwise the result equals resolve(net, order) exactly.
-/// `to` (> from, optional): the entries from `to` on are also `base`'s order's (3-opt moves a
-/// segment inside [from, to)); then a robot there is resolved again only when a robot above it
-/// that shares a box with it got a different delay, else its delay is copied (a robot's delay is
-/// a function of its higher neighbours' delays only, so the result is still exactly resolve()'s).
-[[nodiscard]] Resolution resolve_incremental(const MdNetwork& net, std::span<const int> order,
-                                             const Resolution& base, int from, double cutoff,
-                                             int to = -1);
+/// Incremental resolve() for local search over orders (the GA's 3-opt, issue #16). Built once per
+/// network: per robot its boxes as arcs oriented "the other robot above" (in incident order) and
+/// its distinct neighbours.
+///
+/// resolve_move(): `order` equals `base_order` outside the positions [from, to) (a segment move
+/// permutes only those); `base` = resolve(net, base_order). A robot's delay is a function of the
+/// set of its higher neighbours and their delays (resolve() visits its boxes in incident order,
+/// filtered by rank), so a robot is resolved again only when
+///  - it lies in [from, to) and some neighbour changed sides (above <-> below) with it, or
+///  - a higher neighbour's delay differs from its delay in `base` (bitwise);
+/// every other robot keeps its delay from `base`. Stops (Resolution::cut, makespan infinity) as
+/// soon as a completion time exceeds `cutoff`: such an order cannot beat one of makespan <= cutoff.
+/// Otherwise the result equals resolve(net, order) bitwise (tested). Throws voronav::Error when
+/// an order is not a permutation of the robots.
+class MoveEvaluator {
+ public:
+  explicit MoveEvaluator(const MdNetwork& net);
+  [[nodiscard]] Resolution resolve_move(std::span<const int> base_order, const Resolution& base,
+                                        std::span<const int> order, int from, int to,
+                                        double cutoff);
+  /// Robots resolved again by the last resolve_move() (the others kept their delay).
+  [[nodiscard]] int last_resolved() const { return last_resolved_; }
+
+ private:
+  struct Arc {
+    int j;     ///< the other robot (above)
+    double m;  ///< (M, D) with j above, no delays
+    double d;
+  };
+  const MdNetwork& net_;
+  std::vector<Arc> arcs_;                 ///< per robot, in incident order
+  std::vector<int> arc_begin_;            ///< robot i: arcs_[arc_begin_[i], arc_begin_[i+1])
+  std::vector<int> nbrs_, nbr_begin_;     ///< distinct neighbours, same layout
+  std::vector<int> rank_old_, rank_new_;  ///< scratch
+  std::vector<char> dirty_;               ///< scratch
+  struct Active {
+    double m, d, hd;  ///< hd: the higher robot's delay
+    int j;
+  };
+  std::vector<Active> act_;  ///< scratch: the boxes with higher robots
+  int last_resolved_ = 0;
+};
 
 /// An arc of the network of a given order: from `high` to `low`, (M, D) after the delays.
 struct OrientedArc {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <random>
 
+#include "voronav/coordination/internal/sipp_test_instances.hpp"
 #include "voronav/coordination/pbs.hpp"
 #include "voronav/coordination/verify.hpp"
 
@@ -53,22 +54,8 @@ TEST(Pbs, EveryPlanPassesTheCheckerAndSolvesWhatPrioritizedSolves) {
   std::mt19937 rng(2119);
   int pp_solved = 0, pbs_solved = 0;
   for (int trial = 0; trial < 16; ++trial) {
-    const int w = 10, h = 8;
-    BinaryGrid g(w, h);
-    std::bernoulli_distribution wall(0.15);
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        g[Cell{x, y}] = wall(rng) ? 1 : 0;
-    std::vector<Cell> free;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        if (g[Cell{x, y}] == 0) free.push_back({x, y});
-    std::shuffle(free.begin(), free.end(), rng);
     const int n = 8;
-    std::vector<SippRobot> robots;
-    for (int i = 0; i < n; ++i)
-      robots.push_back({i + 1, free[static_cast<std::size_t>(i)],
-                        free[static_cast<std::size_t>(i + n)], 0.5, 1.0});
+    const auto [g, robots] = internal::random_sipp_instance(rng, 10, 8, 0.15, n);
     PbsOptions o;
     o.sipp.at_start = trial % 4 < 2 ? AtStart::kWait : AtStart::kAppear;
     o.sipp.at_goal = trial % 2 == 0 ? AtGoal::kStay : AtGoal::kLeave;

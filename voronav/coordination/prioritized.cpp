@@ -178,6 +178,12 @@ SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vec
     return o;
   };
   std::vector<std::pair<OrderRule, std::vector<int>>> candidates;
+  bool have_bounds = false;  // individual_bounds() once, for every rule that needs it
+  auto bounds = [&]() -> const IndividualBounds& {
+    if (!have_bounds) out.bounds = individual_bounds(blocked, agents);
+    have_bounds = true;
+    return out.bounds;
+  };
   const bool best = options.order == OrderRule::kBest || options.order == OrderRule::kGa;
   if (best || options.order == OrderRule::kEdf) {
     if (n > 1) {
@@ -191,7 +197,7 @@ SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vec
     candidates.push_back({OrderRule::kIndex, index_order()});
   if (best || options.order == OrderRule::kShortestFirst ||
       options.order == OrderRule::kLongestFirst) {
-    const IndividualBounds lb = individual_bounds(blocked, agents);
+    const IndividualBounds& lb = bounds();
     std::vector<int> o = index_order();
     std::stable_sort(o.begin(), o.end(), [&](int a, int b) {
       return lb.travel[static_cast<std::size_t>(a)] < lb.travel[static_cast<std::size_t>(b)];
@@ -203,7 +209,7 @@ SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked, const std::vec
       candidates.push_back({OrderRule::kLongestFirst, o});
   }
   if (best || options.order == OrderRule::kDependencies) {
-    const IndividualBounds lb = individual_bounds(blocked, agents);
+    const IndividualBounds& lb = bounds();
     candidates.push_back({OrderRule::kDependencies,
                           dependency_order(g, robots, lb, options.map.at_start == AtStart::kWait,
                                            options.map.at_goal == AtGoal::kStay)});

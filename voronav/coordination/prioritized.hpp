@@ -119,6 +119,14 @@ struct SippCoordinateOptions {
   double tolerance = 1e-6;  ///< checker tolerance [m]
 };
 
+/// Lower bounds: each robot's shortest 8-connected travel time on the map inflated by its radius
+/// (A*), ignoring the others; makespan bound = their max, sum bound = their sum.
+struct IndividualBounds {
+  std::vector<double> travel;            ///< [s] per robot
+  std::vector<std::vector<Cell>> paths;  ///< the shortest paths (empty when none)
+  double makespan = 0.0, sum = 0.0;
+};
+
 struct SippCoordinationResult {
   PrioritizedResult plan;
   std::vector<Trajectory> trajectories;  ///< per robot, under the presence conventions
@@ -132,24 +140,21 @@ struct SippCoordinationResult {
   int ga_generations = 0;       ///< --order ga: generations run
   std::size_t ga_evaluations = 0;  ///< --order ga: orders planned
   bool ga_improved = false;        ///< --order ga: found an order better than every seed
+  /// individual_bounds(), when an order rule needed them (shortest/longest-first, deps, best,
+  /// ga); empty otherwise. Computed once per call.
+  IndividualBounds bounds;
   double order_ms = 0.0, plan_ms = 0.0, verify_ms = 0.0, time_ms = 0.0;
   std::string message;
 };
+
+/// The bounds of IndividualBounds above (A* per robot).
+[[nodiscard]] IndividualBounds individual_bounds(const BinaryGrid& blocked,
+                                                 const std::vector<Agent>& agents);
 
 /// Robots from `agents` (start = first path node, goal = last, in `blocked`'s cells).
 [[nodiscard]] SippCoordinationResult coordinate_sipp(const BinaryGrid& blocked,
                                                      const std::vector<Agent>& agents,
                                                      const SippCoordinateOptions& options = {});
-
-/// Lower bounds: each robot's shortest 8-connected travel time on the map inflated by its radius
-/// (A*), ignoring the others; makespan bound = their max, sum bound = their sum.
-struct IndividualBounds {
-  std::vector<double> travel;            ///< [s] per robot
-  std::vector<std::vector<Cell>> paths;  ///< the shortest paths (empty when none)
-  double makespan = 0.0, sum = 0.0;
-};
-[[nodiscard]] IndividualBounds individual_bounds(const BinaryGrid& blocked,
-                                                 const std::vector<Agent>& agents);
 
 /// Start/goal dependency order (issue #21, for --at-start wait / --at-goal stay): robot i should
 /// precede j when i's start lies on j's shortest path (i waits there until it leaves, so it should

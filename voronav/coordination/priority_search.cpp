@@ -7,6 +7,7 @@
 #include <random>
 #include <string>
 
+#include "voronav/coordination/internal/ga_operators.hpp"
 #include "voronav/core/error.hpp"
 
 namespace voronav::coordination {
@@ -243,19 +244,28 @@ class Ga {
         suffix_(suffix),
         o_(o),
         rng_(o.seed),
-        n_(static_cast<int>(searched.size())) {
-    weight_.assign(static_cast<std::size_t>(n_ * n_), 0.0);
+        n_(static_cast<int>(searched.size())),
+        ops_(n_, reconnection_weights(net, searched)),
+        evaluator_(net) {}
+
+  /// The greedy reconnection weight of edge a -> b (local indices): k0 = M + D summed over the
+  /// boxes of a and b (a box no delay resolves counts 1e9).
+  static std::vector<double> reconnection_weights(const MdNetwork& net,
+                                                  const std::vector<int>& searched) {
+    const int n = static_cast<int>(searched.size());
+    std::vector<double> weight(static_cast<std::size_t>(n * n), 0.0);
     std::vector<int> local(static_cast<std::size_t>(net.size()), -1);
-    for (int a = 0; a < n_; ++a)
+    for (int a = 0; a < n; ++a)
       local[static_cast<std::size_t>(searched[static_cast<std::size_t>(a)])] = a;
     for (const MdBox& b : net.boxes()) {
       const int la = local[static_cast<std::size_t>(b.a)];
       const int lb = local[static_cast<std::size_t>(b.b)];
       if (la < 0 || lb < 0) continue;
       const double k0 = std::isfinite(b.m + b.d) ? b.m + b.d : 1e9;
-      weight_[static_cast<std::size_t>(la * n_ + lb)] += k0;
-      weight_[static_cast<std::size_t>(lb * n_ + la)] += k0;
+      weight[static_cast<std::size_t>(la * n + lb)] += k0;
+      weight[static_cast<std::size_t>(lb * n + la)] += k0;
     }
+    return weight;
   }
 
   struct Individual {
@@ -279,149 +289,39 @@ class Ga {
     return resolve(net_, order);
   }
 
-  Resolution evaluate_from(const std::vector<int>& seq, const Resolution& base, int from,
-                           double cutoff, int to = -1) {
-    ++evaluations_;
-    std::vector<int> order;
-    order.reserve(seq.size() + suffix_.size());
+  /// The full order (searched robots, then the suffix) of a local sequence.
+  void full_order(const std::vector<int>& seq, std::vector<int>& order) const {
+    order.clear();
     for (const int l : seq)
       order.push_back(searched_[static_cast<std::size_t>(l)]);
     order.insert(order.end(), suffix_.begin(), suffix_.end());
-    return resolve_incremental(net_, order, base, from, cutoff, to);
   }
 
-  int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  int uniform(int lo, int hi) { return internal::uniform(rng_, lo, hi); }
   double unit() { return std::uniform_real_distribution<double>(0.0, 1.0)(rng_); }
-
-  /// Greedy reconnection (DPX, section 4.2.2): chains fragments, always appending the fragment
-  /// whose head has the largest M + D with the current tail, avoiding forbidden edges when
-  /// possible. forbidden(a, b): edge a -> b must not be created; forbidden(-1, b): b must not be
-  /// first.
-  template <class Forbidden>
-  std::vector<int> reconnect(std::vector<std::vector<int>> frags, Forbidden forbidden) {
-    std::vector<int> out;
-    out.reserve(static_cast<std::size_t>(n_));
-    auto take = [&](std::size_t f) {
-      out.insert(out.end(), frags[f].begin(), frags[f].end());
-      frags.erase(frags.begin() + static_cast<std::ptrdiff_t>(f));
-    };
-    {
-      std::vector<std::size_t> cand;
-      for (std::size_t f = 0; f < frags.size(); ++f) {
-        if (!forbidden(-1, frags[f].front())) cand.push_back(f);
-      }
-      if (cand.empty()) {
-        for (std::size_t f = 0; f < frags.size(); ++f)
-          cand.push_back(f);
-      }
-      take(cand[static_cast<std::size_t>(uniform(0, static_cast<int>(cand.size()) - 1))]);
-    }
-    while (!frags.empty()) {
-      const int tail = out.back();
-      std::vector<std::size_t> cand;
-      double best_w = -1.0;
-      for (int pass = 0; pass < 2 && cand.empty(); ++pass) {
-        for (std::size_t f = 0; f < frags.size(); ++f) {
-          const int head = frags[f].front();
-          if (pass == 0 && forbidden(tail, head)) continue;
-          const double w = weight_[static_cast<std::size_t>(tail * n_ + head)];
-          if (w > best_w + kEps) {
-            best_w = w;
-            cand.assign(1, f);
-          } else if (w >= best_w - kEps) {
-            cand.push_back(f);
-          }
-        }
-      }
-      take(cand[static_cast<std::size_t>(uniform(0, static_cast<int>(cand.size()) - 1))]);
-    }
-    return out;
-  }
-
-  std::vector<int> successors(const std::vector<int>& seq) const {
-    std::vector<int> succ(static_cast<std::size_t>(n_) + 1, -2);
-    succ[static_cast<std::size_t>(n_)] = seq.front();  // virtual start node
-    for (std::size_t k = 0; k + 1 < seq.size(); ++k)
-      succ[static_cast<std::size_t>(seq[k])] = seq[k + 1];
-    succ[static_cast<std::size_t>(seq.back())] = -1;
-    return succ;
-  }
-
-  /// DPX: keep the edges common to both parents, reconnect greedily with edges of neither.
-  std::vector<int> dpx(const std::vector<int>& pa, const std::vector<int>& pb) {
-    const auto sa = successors(pa), sb = successors(pb);
-    std::vector<std::vector<int>> frags{{pa.front()}};
-    for (std::size_t k = 1; k < pa.size(); ++k) {
-      if (sb[static_cast<std::size_t>(pa[k - 1])] == pa[k]) {
-        frags.back().push_back(pa[k]);
-      } else {
-        frags.push_back({pa[k]});
-      }
-    }
-    auto forbidden = [&](int a, int b) {
-      const auto idx = static_cast<std::size_t>(a < 0 ? n_ : a);
-      return sa[idx] == b || sb[idx] == b;
-    };
-    return reconnect(std::move(frags), forbidden);
-  }
-
-  /// Removes 4..7 random edges and reconnects greedily without them.
-  std::vector<int> mutate(const std::vector<int>& seq) {
-    const int edges = n_ - 1;
-    if (edges < 1) return seq;
-    const int k = std::min(edges, uniform(o_.mutation_min_edges, o_.mutation_max_edges));
-    std::vector<int> pos(static_cast<std::size_t>(edges));
-    std::iota(pos.begin(), pos.end(), 0);
-    std::shuffle(pos.begin(), pos.end(), rng_);
-    std::vector<char> cut(static_cast<std::size_t>(edges), 0);
-    for (int i = 0; i < k; ++i)
-      cut[static_cast<std::size_t>(pos[static_cast<std::size_t>(i)])] = 1;
-    std::vector<std::vector<int>> frags{{seq.front()}};
-    std::vector<int> removed_succ(static_cast<std::size_t>(n_) + 1, -2);
-    removed_succ[static_cast<std::size_t>(n_)] = seq.front();
-    for (std::size_t e = 0; e + 1 < seq.size(); ++e) {
-      if (cut[e]) {
-        removed_succ[static_cast<std::size_t>(seq[e])] = seq[e + 1];
-        frags.push_back({seq[e + 1]});
-      } else {
-        frags.back().push_back(seq[e + 1]);
-      }
-    }
-    auto forbidden = [&](int a, int b) {
-      return removed_succ[static_cast<std::size_t>(a < 0 ? n_ : a)] == b;
-    };
-    return reconnect(std::move(frags), forbidden);
-  }
 
   /// 3-opt for the asymmetric case: move a segment to another place without reversing it
   /// (the only 3-opt move that keeps every edge's direction). First improvement, random moves.
   void three_opt(Individual& ind) {
     if (n_ < 3 || o_.three_opt_iterations < 0) return;
     const int iters = o_.three_opt_iterations > 0 ? o_.three_opt_iterations : n_ * (n_ - 1);
-    std::vector<int> cand(static_cast<std::size_t>(n_));
+    std::vector<int> cand;
+    std::vector<int> base_order, cand_order;
+    full_order(ind.seq, base_order);
+    int from = 0, to = 0;
     for (int it = 0; it < iters; ++it) {
-      const int i = uniform(0, n_ - 1);
-      const int j = uniform(i, std::min(n_ - 1, i + uniform(0, n_ - 1)));
-      const int len = j - i + 1;
-      if (len >= n_) continue;
-      const int k = uniform(0, n_ - len);  // insertion position in the remaining sequence
-      if (k == i) continue;
-      std::vector<int> rest;
-      rest.reserve(static_cast<std::size_t>(n_ - len));
-      for (int p = 0; p < n_; ++p) {
-        if (p < i || p > j) rest.push_back(ind.seq[static_cast<std::size_t>(p)]);
-      }
-      cand.assign(rest.begin(), rest.begin() + k);
-      cand.insert(cand.end(), ind.seq.begin() + i, ind.seq.begin() + j + 1);
-      cand.insert(cand.end(), rest.begin() + k, rest.end());
-      // Positions before min(i, k) keep their robots: reuse their delays, and stop as soon as
-      // the candidate's makespan exceeds the current one (it cannot be better then).
-      // Positions from max(j + 1, k + len) on hold the same robots as before.
-      Resolution r = evaluate_from(cand, ind.res, std::min(i, k), ind.res.makespan + kEps,
-                                   std::max(j + 1, k + len));
+      if (!internal::GaOperators::segment_move(ind.seq, rng_, cand, from, to)) continue;
+      // Only positions [from, to) change robots: the evaluator resolves again only the robots
+      // whose higher neighbours changed (MoveEvaluator), and stops as soon as the candidate's
+      // makespan exceeds the current one (it cannot be better then).
+      full_order(cand, cand_order);
+      ++evaluations_;
+      Resolution r = evaluator_.resolve_move(base_order, ind.res, cand_order, from, to,
+                                             ind.res.makespan + kEps);
       if (!r.cut && better(r, ind.res)) {
-        ind.seq = cand;
+        ind.seq.swap(cand);
         ind.res = std::move(r);
+        base_order.swap(cand_order);
       }
     }
   }
@@ -464,9 +364,10 @@ class Ga {
         const int a = uniform(0, pop_size - 1);
         int b = uniform(0, pop_size - 2);
         if (b >= a) ++b;
-        std::vector<int> child =
-            dpx(pop[static_cast<std::size_t>(a)].seq, pop[static_cast<std::size_t>(b)].seq);
-        if (unit() < o_.mutation_rate) child = mutate(child);
+        std::vector<int> child = ops_.dpx(pop[static_cast<std::size_t>(a)].seq,
+                                          pop[static_cast<std::size_t>(b)].seq, rng_);
+        if (unit() < o_.mutation_rate)
+          child = ops_.mutate(child, o_.mutation_min_edges, o_.mutation_max_edges, rng_);
         Individual ind = make(std::move(child));
         three_opt(ind);
         children.push_back(std::move(ind));
@@ -529,7 +430,8 @@ class Ga {
   GaOptions o_;
   std::mt19937_64 rng_;
   int n_;
-  std::vector<double> weight_;
+  internal::GaOperators ops_;
+  MoveEvaluator evaluator_;
   std::size_t evaluations_ = 0;
 };
 

@@ -7,6 +7,7 @@
 #include <random>
 #include <string>
 
+#include "voronav/coordination/internal/ga_operators.hpp"
 #include "voronav/core/error.hpp"
 
 namespace voronav::coordination {
@@ -29,7 +30,8 @@ class SippGa {
         planning_(planning),
         o_(o),
         rng_(o.seed),
-        n_(static_cast<int>(robots.size())) {
+        n_(static_cast<int>(robots.size())),
+        ops_(n_, {}) {
     planning_.max_restarts = 0;
   }
 
@@ -46,97 +48,15 @@ class SippGa {
     return ind;
   }
 
-  int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  int uniform(int lo, int hi) { return internal::uniform(rng_, lo, hi); }
 
-  /// Chains fragments in a random order, avoiding the edges forbidden(a, b) when possible.
-  template <class Forbidden>
-  std::vector<int> reconnect(std::vector<std::vector<int>> frags, Forbidden forbidden) {
-    std::vector<int> out;
-    while (!frags.empty()) {
-      std::vector<std::size_t> cand;
-      for (std::size_t f = 0; f < frags.size(); ++f) {
-        if (!forbidden(out.empty() ? -1 : out.back(), frags[f].front())) cand.push_back(f);
-      }
-      if (cand.empty()) {
-        cand.resize(frags.size());
-        std::iota(cand.begin(), cand.end(), std::size_t{0});
-      }
-      const std::size_t f =
-          cand[static_cast<std::size_t>(uniform(0, static_cast<int>(cand.size()) - 1))];
-      out.insert(out.end(), frags[f].begin(), frags[f].end());
-      frags.erase(frags.begin() + static_cast<std::ptrdiff_t>(f));
-    }
-    return out;
-  }
-
-  std::vector<int> successors(const std::vector<int>& s) const {
-    std::vector<int> succ(static_cast<std::size_t>(n_) + 1, -2);
-    succ[static_cast<std::size_t>(n_)] = s.front();
-    for (std::size_t k = 0; k + 1 < s.size(); ++k)
-      succ[static_cast<std::size_t>(s[k])] = s[k + 1];
-    return succ;
-  }
-
-  /// DPX: the edges common to both parents are kept; fragments are reconnected without any edge
-  /// of either parent where possible.
-  std::vector<int> dpx(const std::vector<int>& a, const std::vector<int>& b) {
-    const auto sa = successors(a), sb = successors(b);
-    std::vector<std::vector<int>> frags{{a.front()}};
-    for (std::size_t k = 1; k < a.size(); ++k) {
-      if (sb[static_cast<std::size_t>(a[k - 1])] == a[k]) {
-        frags.back().push_back(a[k]);
-      } else {
-        frags.push_back({a[k]});
-      }
-    }
-    return reconnect(std::move(frags), [&](int x, int y) {
-      const auto i = static_cast<std::size_t>(x < 0 ? n_ : x);
-      return sa[i] == y || sb[i] == y;
-    });
-  }
-
-  std::vector<int> mutate(const std::vector<int>& s) {
-    const int edges = n_ - 1;
-    if (edges < 1) return s;
-    const int k = std::min(edges, uniform(o_.mutation_min_edges, o_.mutation_max_edges));
-    std::vector<int> pos(static_cast<std::size_t>(edges));
-    std::iota(pos.begin(), pos.end(), 0);
-    std::shuffle(pos.begin(), pos.end(), rng_);
-    std::vector<char> cut(static_cast<std::size_t>(edges), 0);
-    for (int i = 0; i < k; ++i)
-      cut[static_cast<std::size_t>(pos[static_cast<std::size_t>(i)])] = 1;
-    std::vector<std::vector<int>> frags{{s.front()}};
-    std::vector<int> removed(static_cast<std::size_t>(n_) + 1, -2);
-    for (std::size_t e = 0; e + 1 < s.size(); ++e) {
-      if (cut[e]) {
-        removed[static_cast<std::size_t>(s[e])] = s[e + 1];
-        frags.push_back({s[e + 1]});
-      } else {
-        frags.back().push_back(s[e + 1]);
-      }
-    }
-    return reconnect(std::move(frags), [&](int x, int y) {
-      return removed[static_cast<std::size_t>(x < 0 ? n_ : x)] == y;
-    });
-  }
-
-  /// 3-opt segment moves (no reversal: the only kind that keeps every edge's direction), first
-  /// improvement.
+  /// 3-opt segment moves (internal::GaOperators::segment_move), first improvement.
   void three_opt(Individual& ind) {
+    std::vector<int> cand;
+    int from = 0, to = 0;
     for (int it = 0; it < o_.three_opt && n_ >= 3 && !out_of_time(); ++it) {
-      const int i = uniform(0, n_ - 1);
-      const int j = uniform(i, std::min(n_ - 1, i + uniform(0, n_ - 1)));
-      const int len = j - i + 1;
-      if (len >= n_) continue;
-      const int k = uniform(0, n_ - len);
-      if (k == i) continue;
-      std::vector<int> rest;
-      for (int p = 0; p < n_; ++p)
-        if (p < i || p > j) rest.push_back(ind.seq[static_cast<std::size_t>(p)]);
-      std::vector<int> cand(rest.begin(), rest.begin() + k);
-      cand.insert(cand.end(), ind.seq.begin() + i, ind.seq.begin() + j + 1);
-      cand.insert(cand.end(), rest.begin() + k, rest.end());
-      Individual c = make(std::move(cand));
+      if (!internal::GaOperators::segment_move(ind.seq, rng_, cand, from, to)) continue;
+      Individual c = make(cand);
       if (c.key < ind.key) ind = std::move(c);
     }
   }
@@ -176,9 +96,10 @@ class SippGa {
         const int a = uniform(0, size - 1);
         int b = uniform(0, size - 2);
         if (b >= a) ++b;
-        std::vector<int> child =
-            dpx(pop[static_cast<std::size_t>(a)].seq, pop[static_cast<std::size_t>(b)].seq);
-        if (unit(rng_) < o_.mutation_rate) child = mutate(child);
+        std::vector<int> child = ops_.dpx(pop[static_cast<std::size_t>(a)].seq,
+                                          pop[static_cast<std::size_t>(b)].seq, rng_);
+        if (unit(rng_) < o_.mutation_rate)
+          child = ops_.mutate(child, o_.mutation_min_edges, o_.mutation_max_edges, rng_);
         Individual ind = make(std::move(child));
         three_opt(ind);
         // Elitism (section 4.2): the child replaces a random non-elite member.
@@ -200,8 +121,9 @@ class SippGa {
   Objective objective_;
   PrioritizedOptions planning_;
   SippGaOptions o_;
-  std::mt19937_64 rng_;
+  internal::GaRng rng_;
   int n_;
+  internal::GaOperators ops_;  ///< no weights: the fragments are reconnected at random
   std::size_t evaluations_ = 0;
   double budget_s_ = sipp_ga_budget(o_, static_cast<std::size_t>(n_));
   std::clock_t t0_ = std::clock();

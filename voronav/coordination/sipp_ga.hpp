@@ -6,7 +6,8 @@
 // which some robot has no plan is worth infinity), scored by the makespan or the sum of arrivals
 // (the other breaks ties). Differences from the delay GA (priority_search.hpp), decided here:
 //  - DPX reconnects the fragments in a random order avoiding both parents' edges: the greedy
-//    reconnection by the largest M + D needs the (M,D) network, which SIPP does not use;
+//    reconnection by the largest M + D needs the (M,D) network, which SIPP does not use (the
+//    operators are the delay GA's, internal/ga_operators.hpp, with no weights: all edges tie);
 //  - one evaluation is a full prioritized planning run (milliseconds to a second), so the
 //    population, the children per generation and the 3-opt moves per child are small options
 //    and the search stops at a CPU-time budget (sipp_ga_budget()); the seeds (EDF and the other

@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "voronav/coordination/internal/sipp_test_instances.hpp"
 #include "voronav/coordination/sipp_ga.hpp"
 #include "voronav/coordination/verify.hpp"
 
@@ -13,21 +14,8 @@ namespace {
 
 TEST(SippGa, NeverWorseThanItsSeedsAndDeterministic) {
   std::mt19937 rng(7);
-  const int w = 10, h = 8, n = 8;
-  BinaryGrid g(w, h);
-  std::bernoulli_distribution wall(0.12);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      g[Cell{x, y}] = wall(rng) ? 1 : 0;
-  std::vector<Cell> free;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (g[Cell{x, y}] == 0) free.push_back({x, y});
-  std::shuffle(free.begin(), free.end(), rng);
-  std::vector<SippRobot> robots;
-  for (int i = 0; i < n; ++i)
-    robots.push_back({i + 1, free[static_cast<std::size_t>(i)],
-                      free[static_cast<std::size_t>(i + n)], 0.5, 1.0});
+  const int n = 8;
+  const auto [g, robots] = internal::random_sipp_instance(rng, 10, 8, 0.12, n);
   PrioritizedOptions po;
   po.sipp.at_start = AtStart::kAppear;
   po.sipp.at_goal = AtGoal::kLeave;

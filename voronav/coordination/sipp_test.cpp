@@ -6,6 +6,7 @@
 #include <random>
 
 #include "voronav/coordination/coordinator.hpp"
+#include "voronav/coordination/internal/sipp_test_instances.hpp"
 #include "voronav/coordination/prioritized.hpp"
 #include "voronav/coordination/sipp.hpp"
 #include "voronav/coordination/verify.hpp"
@@ -128,23 +129,11 @@ TEST(Sipp, EveryPlanPassesTheChecker) {
   std::mt19937 rng(21);
   int solved = 0;
   for (int trial = 0; trial < 24; ++trial) {
-    const int w = 12, h = 10;
-    BinaryGrid g(w, h);
-    std::bernoulli_distribution wall(0.15);
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        g[Cell{x, y}] = wall(rng) ? 1 : 0;
-    std::vector<Cell> free;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        if (g[Cell{x, y}] == 0) free.push_back({x, y});
-    std::shuffle(free.begin(), free.end(), rng);
     const int n = 8;
-    std::vector<SippRobot> robots;
-    for (int i = 0; i < n; ++i) {
-      const double r = trial % 3 == 0 ? 0.35 : 0.5;
-      robots.push_back({i + 1, free[static_cast<std::size_t>(i)],
-                        free[static_cast<std::size_t>(i + n)], r, trial % 2 == 0 ? 1.0 : 1.7});
+    auto [g, robots] = internal::random_sipp_instance(rng, 12, 10, 0.15, n);
+    for (auto& r : robots) {
+      r.radius = trial % 3 == 0 ? 0.35 : 0.5;
+      r.v_max = trial % 2 == 0 ? 1.0 : 1.7;
     }
     PrioritizedOptions o;
     o.sipp.at_start = trial % 4 < 2 ? AtStart::kWait : AtStart::kAppear;
