@@ -598,29 +598,14 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   // at the last frontiers and jammed there (stalled robots). Returns the cells to restore.
   constexpr double kRobotAwareRange = 3.0;
   const auto mark_others = [&](std::size_t i) {
-    std::vector<std::size_t> marked;
-    const Vec2 me = agents[i]->body.true_pose().position;
-    const double rr = 2.0 * body + 0.05;
-    const int rc = static_cast<int>(std::ceil(rr / g.resolution));
-    for (std::size_t j = 0; j < agents.size(); ++j) {
-      const Vec2 p = agents[j]->body.true_pose().position;
-      if (j == i || distance(p, me) > kRobotAwareRange) continue;
-      const auto c = g.world_to_cell(p);
-      if (!c) continue;
-      for (int dy = -rc; dy <= rc; ++dy)
-        for (int dx = -rc; dx <= rc; ++dx) {
-          const Cell n{c->x + dx, c->y + dy};
-          if (!trav.contains(n) || trav[n] != 0) continue;
-          if (distance(g.cell_center(n), p) > rr) continue;
-          trav[n] = 1;
-          marked.push_back(trav.index(n));
-        }
-    }
-    return marked;
+    std::vector<Vec2> others_at;
+    for (std::size_t j = 0; j < agents.size(); ++j)
+      if (j != i) others_at.push_back(agents[j]->body.true_pose().position);
+    return block_robot_discs(trav, agents[i]->body.true_pose().position, others_at,
+                             2.0 * body + 0.05, kRobotAwareRange);
   };
   const auto unmark = [&](const std::vector<std::size_t>& marked) {
-    for (const std::size_t k : marked)
-      trav[k] = 0;
+    restore_free_cells(trav, marked);
   };
   const auto replan_frontiers = [&] {
     std::vector<std::size_t> active;
