@@ -12,12 +12,17 @@
 #   TIME     simulated time limit [s]                (900)
 #   JOBS     parallel runs                           (2)
 #   OUT      result name: bench/results/$OUT.md and ${OUT}_runs.json   (exploration)
+#   VORONAV_BIN  the voronav binary to run (default: build it in the build dir and run that)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/default}
-cmake --build "$build" --target voronav_cli >/dev/null
+# VORONAV_BIN: run this binary instead (e.g. a copy, so that rebuilding meanwhile is safe).
+if [[ -z ${VORONAV_BIN:-} ]]; then
+  cmake --build "$build" --target voronav_cli >/dev/null
+  export VORONAV_BIN="$build/bin/voronav"
+fi
 mkdir -p "$root/bench/results/img"
-export VORONAV_BIN="$build/bin/voronav" ROOT="$root"
+export ROOT="$root"
 export MAPS=${MAPS:-"paper $root/data/ros_maps/depot/depot.yaml $root/data/ros_maps/turtlebot3_world/map.yaml $root/data/floorplans/lab_intel.png"}
 export ROBOTS=${ROBOTS:-"1 2 4 8 16"} METHODS=${METHODS:-"tree tree+replan frontier coordinated tree-frontier"}
 export TIME=${TIME:-900} SEEDS=${SEEDS:-16} JOBS=${JOBS:-2} OUT=${OUT:-exploration}

@@ -591,6 +591,22 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   // look into unknown space as candidate targets (costs on the grid where only known obstacles
   // block) and ranks every target by its information gain (the unknown fraction around it).
   planning::BfsFlood flood_opt;
+  // Robot-aware planning: for robot i, the discs of the other robots within kRobotAwareRange
+  // block `trav` (a robot centre cannot come within two body radii of another's), so a robot
+  // plans around a robot in its way, and a goal reachable only through a crowd costs the detour
+  // or is out of reach this round. Without it 16 robots on willow crowded into the corridors
+  // at the last frontiers and jammed there (stalled robots). Returns the cells to restore.
+  constexpr double kRobotAwareRange = 3.0;
+  const auto mark_others = [&](std::size_t i) {
+    std::vector<Vec2> others_at;
+    for (std::size_t j = 0; j < agents.size(); ++j)
+      if (j != i) others_at.push_back(agents[j]->body.true_pose().position);
+    return block_robot_discs(trav, agents[i]->body.true_pose().position, others_at,
+                             2.0 * body + 0.05, kRobotAwareRange);
+  };
+  const auto unmark = [&](const std::vector<std::size_t>& marked) {
+    restore_free_cells(trav, marked);
+  };
   const auto replan_frontiers = [&] {
     std::vector<std::size_t> active;
     for (std::size_t i = 0; i < agents.size(); ++i)
@@ -625,6 +641,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       const auto banned = [&](Vec2 tp) {
         for (const Vec2& b : a.blacklist)
           if (distance(b, tp) < 0.5) return true;
+
         return false;
       };
       if (fr.size() > n_frontiers) {
@@ -635,8 +652,12 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
             if (s >= 0 && !banned(fr[f].centroid)) costs[r][f] = s * g.resolution;
           }
       }
+      const std::vector<std::size_t> marked = mark_others(active[r]);
       const auto from = nearest_free(trav, pos);
-      if (!from || flood.flood(trav, *from, planning::Connectivity::k8) == 0) continue;
+      if (!from || flood.flood(trav, *from, planning::Connectivity::k8) == 0) {
+        unmark(marked);
+        continue;
+      }
       for (std::size_t f = 0; f < n_frontiers; ++f) {
         const Vec2 tp = g.cell_center(fr[f].target);
         const std::int32_t s = flood.steps(trav, fr[f].target);
@@ -651,6 +672,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         const auto k = static_cast<std::size_t>(mine[0]);
         paths[r][k] = descend(trav, flood, fr[k].target);
       }
+      unmark(marked);
     }
     std::vector<int> choice = o.method == ExplorationMethod::kFrontier
                                   ? assign_nearest(fr, costs, o.frontier)
@@ -683,9 +705,11 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       a.goal_leaf = false;
       std::vector<Vec2> path = paths[r][k];
       if (path.empty()) {
+        const std::vector<std::size_t> marked = mark_others(active[r]);
         const auto from = nearest_free(trav, a.body.true_pose().position);
         if (from && flood.flood(trav, *from, planning::Connectivity::k8) > 0)
           path = descend(trav, flood, fr[k].target);
+        unmark(marked);
       }
       if (path.empty()) continue;
       path.insert(path.begin(), a.body.true_pose().position);
@@ -775,6 +799,11 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
               ++result.leaves_reached;
               log_event(t, a, "leaf");
             }
+            a.blacklist.push_back(*a.goal);
+          } else if (a.goal && distance(pose.position, *a.goal) < 2.0 * o.goal_tolerance) {
+            // A frontier still there once the robot stands on its target cannot be observed
+            // from here (unknown cells walled in, e.g. in clutter): not this robot's goal again.
+            // Chasing it again kept a robot circling on one spot (willow, 16 robots).
             a.blacklist.push_back(*a.goal);
           }
           a.goal.reset();

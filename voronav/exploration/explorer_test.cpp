@@ -60,6 +60,7 @@ TEST(Explorer, FrontierBaselinesCoverTheWorld) {
     ASSERT_TRUE(r.t90_s.has_value()) << to_string(m);
     EXPECT_LE(*r.t90_s, 400.0);
     EXPECT_EQ(r.leaves, 0);
+    EXPECT_EQ(r.stalled_robots, 0) << to_string(m);
   }
 }
 

@@ -149,4 +149,30 @@ std::vector<int> assign_coordinated(std::span<const Frontier> frontiers,
   return out;
 }
 
+std::vector<std::size_t> block_robot_discs(BinaryGrid& grid, Vec2 self,
+                                           std::span<const Vec2> others, double radius,
+                                           double range) {
+  std::vector<std::size_t> changed;
+  const GridGeometry& g = grid.geometry();
+  const int rc = static_cast<int>(std::ceil(radius / g.resolution));
+  for (const Vec2& p : others) {
+    if (distance(p, self) > range) continue;
+    const auto c = g.world_to_cell(p);
+    if (!c) continue;
+    for (int dy = -rc; dy <= rc; ++dy)
+      for (int dx = -rc; dx <= rc; ++dx) {
+        const Cell n{c->x + dx, c->y + dy};
+        if (!grid.contains(n) || grid[n] != 0 || distance(g.cell_center(n), p) > radius) continue;
+        grid[n] = 1;
+        changed.push_back(grid.index(n));
+      }
+  }
+  return changed;
+}
+
+void restore_free_cells(BinaryGrid& grid, std::span<const std::size_t> indices) {
+  for (const std::size_t k : indices)
+    grid[k] = 0;
+}
+
 }  // namespace voronav::exploration

@@ -55,4 +55,14 @@ struct Frontier {
                                                   const FrontierOptions& options = {},
                                                   std::span<const double> gains = {});
 
+/// Robot-aware planning (ours, not Burgard's): sets to 1 (blocked) the free cells of `grid`
+/// within `radius` [m] of every position in `others` that lies within `range` [m] of `self`, so
+/// a flood from `self` goes around robots in its way. Returns the indices of the changed cells
+/// for restore_free_cells(). The runner uses radius = two body radii + 5 cm and range = 3 m.
+[[nodiscard]] std::vector<std::size_t> block_robot_discs(BinaryGrid& grid, Vec2 self,
+                                                         std::span<const Vec2> others,
+                                                         double radius, double range);
+/// Undoes block_robot_discs: the cells at `indices` become free (0) again.
+void restore_free_cells(BinaryGrid& grid, std::span<const std::size_t> indices);
+
 }  // namespace voronav::exploration

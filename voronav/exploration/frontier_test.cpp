@@ -3,6 +3,7 @@
 
 #include "voronav/core/error.hpp"
 #include "voronav/exploration/frontier.hpp"
+#include "voronav/planning/bfs.hpp"
 
 namespace voronav::exploration {
 namespace {
@@ -88,6 +89,35 @@ TEST(Frontier, InformationGainRanksTheCoordinatedAllocation) {
   EXPECT_EQ(assign_coordinated(fr, costs, {}, gains), (std::vector<int>{1}));
   const std::vector<double> wrong{0.5};
   EXPECT_THROW((void)assign_coordinated(fr, costs, {}, wrong), Error);
+}
+
+TEST(Frontier, RobotDiscsBlockACorridorAndAreRestored) {
+  // A corridor 3 cells wide (0.1 m cells, 2 m long); a robot stands in its middle. With its
+  // disc (radius 0.29 m = two body radii + 5 cm) blocked, the far end cannot be reached from
+  // the near end; a robot out of range (> 3 m) blocks nothing; restoring gives the grid back.
+  BinaryGrid g(GridGeometry{20, 5, 0.1, {}}, 1);
+  for (int x = 0; x < 20; ++x)
+    for (int y = 1; y <= 3; ++y)
+      g[Cell{x, y}] = 0;
+  const BinaryGrid before = g;
+  const Vec2 self{0.05, 0.25}, blocker{1.05, 0.25}, far_away{1.05, 4.0};
+  const std::vector<Vec2> others{blocker, far_away};
+  planning::BfsFlood flood;
+  ASSERT_GT(flood.flood(g, Cell{0, 2}, planning::Connectivity::k8), 0u);
+  EXPECT_GE(flood.steps(g, Cell{19, 2}), 0);
+  const std::vector<std::size_t> changed = block_robot_discs(g, self, others, 0.29, 3.0);
+  // Free cells with centres within 0.29 m of (1.05, 0.25): columns 8..12 (dx <= 0.2 m) of the
+  // 3 free rows (dy <= 0.1 m; 0.2^2 + 0.1^2 < 0.29^2); columns 7 and 13 are 0.3 m off: 15 cells.
+  EXPECT_EQ(changed.size(), 15u);
+  flood.flood(g, Cell{0, 2}, planning::Connectivity::k8);
+  EXPECT_LT(flood.steps(g, Cell{19, 2}), 0);
+  EXPECT_GE(flood.steps(g, Cell{7, 2}), 0);
+  restore_free_cells(g, changed);
+  EXPECT_EQ(g.data().size(), before.data().size());
+  for (std::size_t k = 0; k < g.size(); ++k)
+    EXPECT_EQ(g[k], before[k]) << k;
+  // Out of range: nothing changes.
+  EXPECT_TRUE(block_robot_discs(g, self, std::vector<Vec2>{far_away}, 0.29, 3.0).empty());
 }
 
 }  // namespace
