@@ -204,8 +204,8 @@ PointSearch search_points(std::span<const VoronoiPoint> points, std::span<const 
 
 namespace {
 
-/// Points bucketed by position into square cells of side h (counting sort, so each cell lists
-/// its points in ascending index order).
+/// Points bucketed by position into square cells of side h (counting sort); settled points are
+/// taken out, so the order within a cell changes (the search's result does not depend on it).
 class PointGrid {
  public:
   PointGrid(std::span<const VoronoiPoint> points, double h) {
@@ -230,17 +230,26 @@ class PointGrid {
     nx_ = static_cast<int>(std::floor((x1 - x0_) / h_)) + 1;
     ny_ = static_cast<int>(std::floor((y1 - y0_) / h_)) + 1;
     begin_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) + 1, 0);
-    std::vector<std::size_t> cell(points.size());
+    cell_.resize(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
-      cell[i] = index(cx(points[i].position.x), cy(points[i].position.y));
-      ++begin_[cell[i] + 1];
+      cell_[i] = index(cx(points[i].position.x), cy(points[i].position.y));
+      ++begin_[cell_[i] + 1];
     }
     for (std::size_t c = 1; c < begin_.size(); ++c)
       begin_[c] += begin_[c - 1];
     order_.resize(points.size());
-    std::vector<std::size_t> fill(begin_.begin(), begin_.end() - 1);
+    end_.assign(begin_.begin(), begin_.end() - 1);
     for (std::size_t i = 0; i < points.size(); ++i)
-      order_[fill[cell[i]]++] = i;
+      order_[end_[cell_[i]]++] = i;
+  }
+  /// Takes point i out of its cell (a settled point is never compared again).
+  void remove(std::size_t i) {
+    const std::size_t c = cell_[i];
+    for (std::size_t k = begin_[c]; k < end_[c]; ++k)
+      if (order_[k] == i) {
+        order_[k] = order_[--end_[c]];
+        return;
+      }
   }
   /// Calls f(j) for every point j in the cells that overlap the square [p - R, p + R].
   template <typename F>
@@ -248,8 +257,11 @@ class PointGrid {
     const int xa = cx(p.x - radius), xb = cx(p.x + radius);
     const int ya = cy(p.y - radius), yb = cy(p.y + radius);
     for (int y = ya; y <= yb; ++y)
-      for (std::size_t k = begin_[index(xa, y)], e = begin_[index(xb, y) + 1]; k < e; ++k)
-        f(order_[k]);
+      for (int x = xa; x <= xb; ++x) {
+        const std::size_t c = index(x, y);
+        for (std::size_t k = begin_[c]; k < end_[c]; ++k)
+          f(order_[k]);
+      }
   }
 
  private:
@@ -267,6 +279,8 @@ class PointGrid {
   double x0_, y0_, h_ = 1.0;
   int nx_ = 1, ny_ = 1;
   std::vector<std::size_t> begin_;  // first entry of each cell in order_ (row-major, + end)
+  std::vector<std::size_t> end_;    // one past the last point still in each cell
+  std::vector<std::size_t> cell_;   // cell of each point
   std::vector<std::size_t> order_;
 };
 
@@ -314,7 +328,7 @@ PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
   s.cost.assign(n, std::numeric_limits<double>::infinity());
   s.parent.assign(n, -1);
   if (n == 0) return s;
-  const PointGrid grid(points, cell_side);
+  PointGrid grid(points, cell_side);
   using Item = std::pair<double, std::size_t>;
   std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
   for (std::size_t i = 0; i < n; ++i)
@@ -329,6 +343,7 @@ PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
     open.pop();
     if (done[i]) continue;
     done[i] = 1;
+    grid.remove(i);
     s.work += n;  // what the all-pairs search examines for this settled point
     const VoronoiPoint& pi = points[i];
     auto relax = [&](std::size_t j) {
