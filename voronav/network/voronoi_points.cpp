@@ -144,7 +144,10 @@ double clearance_at(const OccupancyGrid& local_map, Vec2 world) {
   return std::max(0.0, (std::sqrt(best2) - 0.5) * g.resolution);
 }
 
-bool continues(const VoronoiPoint& p, const VoronoiPoint& q, double r) {
+namespace {
+
+// continues() itself, visible to the compiler here so the search loops inline it.
+inline bool continues_inline(const VoronoiPoint& p, const VoronoiPoint& q, double r) {
   const double a = static_cast<double>(p.clearance) - r;
   const double b = static_cast<double>(q.clearance) - r;
   if (a <= 0.0 || b <= 0.0) return false;
@@ -152,6 +155,12 @@ bool continues(const VoronoiPoint& p, const VoronoiPoint& q, double r) {
   // large runs); hypot was most of the time on 100 robots (docs/reproductions/networked.md).
   const double dx = p.position.x - q.position.x, dy = p.position.y - q.position.y;
   return dx * dx + dy * dy <= (a + b) * (a + b);
+}
+
+}  // namespace
+
+bool continues(const VoronoiPoint& p, const VoronoiPoint& q, double r) {
+  return continues_inline(p, q, r);
 }
 
 PointSearch search_points(std::span<const VoronoiPoint> points, std::span<const double> start_cost,
@@ -177,8 +186,10 @@ PointSearch search_points(std::span<const VoronoiPoint> points, std::span<const 
     done[i] = 1;
     for (std::size_t j = 0; j < n; ++j) {
       ++s.work;
+      ++s.candidates;
       if (done[j]) continue;
-      if (!continues(points[i], points[j], robot_radius_m) && !(extra_edge && extra_edge(i, j)))
+      if (!continues_inline(points[i], points[j], robot_radius_m) &&
+          !(extra_edge && extra_edge(i, j)))
         continue;
       const double nc = c + distance(points[i].position, points[j].position);
       if (nc < s.cost[j]) {
@@ -187,6 +198,178 @@ PointSearch search_points(std::span<const VoronoiPoint> points, std::span<const 
         open.push({nc, j});
       }
     }
+  }
+  return s;
+}
+
+namespace {
+
+/// Points bucketed by position into square cells of side h (counting sort); settled points are
+/// taken out, so the order within a cell changes (the search's result does not depend on it).
+class PointGrid {
+ public:
+  PointGrid(std::span<const VoronoiPoint> points, double h) {
+    double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
+    x0_ = std::numeric_limits<double>::infinity();
+    y0_ = x0_;
+    for (const auto& p : points) {
+      x0_ = std::min(x0_, p.position.x);
+      y0_ = std::min(y0_, p.position.y);
+      x1 = std::max(x1, p.position.x);
+      y1 = std::max(y1, p.position.y);
+    }
+    // At most ~4 cells per point (and at least 1024 allowed): a wide, sparse set gets wider cells
+    // rather than a huge empty grid.
+    const double cap = std::max(1024.0, 4.0 * static_cast<double>(points.size()));
+    auto cells_for = [&](double side) {
+      return (std::floor((x1 - x0_) / side) + 1.0) * (std::floor((y1 - y0_) / side) + 1.0);
+    };
+    while (cells_for(h) > cap)
+      h *= std::sqrt(cells_for(h) / cap) + 0.01;
+    h_ = h;
+    nx_ = static_cast<int>(std::floor((x1 - x0_) / h_)) + 1;
+    ny_ = static_cast<int>(std::floor((y1 - y0_) / h_)) + 1;
+    begin_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) + 1, 0);
+    cell_.resize(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      cell_[i] = index(cx(points[i].position.x), cy(points[i].position.y));
+      ++begin_[cell_[i] + 1];
+    }
+    for (std::size_t c = 1; c < begin_.size(); ++c)
+      begin_[c] += begin_[c - 1];
+    order_.resize(points.size());
+    end_.assign(begin_.begin(), begin_.end() - 1);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      order_[end_[cell_[i]]++] = i;
+  }
+  /// Takes point i out of its cell (a settled point is never compared again).
+  void remove(std::size_t i) {
+    const std::size_t c = cell_[i];
+    for (std::size_t k = begin_[c]; k < end_[c]; ++k)
+      if (order_[k] == i) {
+        order_[k] = order_[--end_[c]];
+        return;
+      }
+  }
+  /// Calls f(j) for every point j in the cells that overlap the square [p - R, p + R].
+  template <typename F>
+  void for_each_near(Vec2 p, double radius, F&& f) const {
+    const int xa = cx(p.x - radius), xb = cx(p.x + radius);
+    const int ya = cy(p.y - radius), yb = cy(p.y + radius);
+    for (int y = ya; y <= yb; ++y)
+      for (int x = xa; x <= xb; ++x) {
+        const std::size_t c = index(x, y);
+        for (std::size_t k = begin_[c]; k < end_[c]; ++k)
+          f(order_[k]);
+      }
+  }
+
+ private:
+  // Monotonic in x, so every point within R of p lies in the cells of [p.x - R, p.x + R].
+  int cx(double x) const {
+    return std::clamp(static_cast<int>(std::floor((x - x0_) / h_)), 0, nx_ - 1);
+  }
+  int cy(double y) const {
+    return std::clamp(static_cast<int>(std::floor((y - y0_) / h_)), 0, ny_ - 1);
+  }
+  std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) +
+           static_cast<std::size_t>(x);
+  }
+  double x0_, y0_, h_ = 1.0;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::size_t> begin_;  // first entry of each cell in order_ (row-major, + end)
+  std::vector<std::size_t> end_;    // one past the last point still in each cell
+  std::vector<std::size_t> cell_;   // cell of each point
+  std::vector<std::size_t> order_;
+};
+
+}  // namespace
+
+PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
+                                   std::span<const double> start_cost, double robot_radius_m,
+                                   const BoundedExtraEdges& extra) {
+  if (start_cost.size() != points.size())
+    throw Error("search_points", 0, "start_cost must have one entry per point");
+  const std::size_t n = points.size();
+  const bool has_edge = static_cast<bool>(extra.edge);
+  bool finite = true;
+  for (const auto& p : points)
+    finite = finite && std::isfinite(p.position.x) && std::isfinite(p.position.y);
+  if (!finite || (has_edge && !(extra.max_distance_m < std::numeric_limits<double>::infinity())))
+    return search_points(points, start_cost, robot_radius_m, extra.edge);  // nothing to bound by
+  for (const auto& [i, j] : extra.unbounded_pairs)
+    if (i >= n || j >= n) throw Error("search_points", 0, "an unbounded pair names no point");
+  // The largest (c - r): a point i continues no point farther than (c_i - r) + amax.
+  double amax = 0.0;
+  for (const auto& p : points)
+    amax = std::max(amax, static_cast<double>(p.clearance) - robot_radius_m);
+  const double emax = has_edge ? std::max(0.0, extra.max_distance_m) : 0.0;
+  // Cells of side amax: a point looks (c - r) + amax <= 2 amax around it for continuing points
+  // (5 x 5 cells); a point in the edge range also emax around it.
+  const double cell_side = amax > 0.0 ? amax : std::max(emax, 1.0);
+  // Adjacency of the unbounded pairs (CSR).
+  std::vector<std::size_t> adj_begin(n + 1, 0), adj;
+  if (has_edge && !extra.unbounded_pairs.empty()) {
+    for (const auto& [i, j] : extra.unbounded_pairs) {
+      ++adj_begin[i + 1];
+      ++adj_begin[j + 1];
+    }
+    for (std::size_t i = 1; i <= n; ++i)
+      adj_begin[i] += adj_begin[i - 1];
+    adj.resize(adj_begin[n]);
+    std::vector<std::size_t> fill(adj_begin.begin(), adj_begin.end() - 1);
+    for (const auto& [i, j] : extra.unbounded_pairs) {
+      adj[fill[i]++] = j;
+      adj[fill[j]++] = i;
+    }
+  }
+  PointSearch s;
+  s.cost.assign(n, std::numeric_limits<double>::infinity());
+  s.parent.assign(n, -1);
+  if (n == 0) return s;
+  PointGrid grid(points, cell_side);
+  using Item = std::pair<double, std::size_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  for (std::size_t i = 0; i < n; ++i)
+    if (std::isfinite(start_cost[i])) {
+      s.cost[i] = start_cost[i];
+      open.push({start_cost[i], i});
+    }
+  std::vector<std::uint8_t> done(n, 0);
+  std::vector<std::size_t> seen(n, n);  // the settled point that last compared j
+  while (!open.empty()) {
+    const auto [c, i] = open.top();
+    open.pop();
+    if (done[i]) continue;
+    done[i] = 1;
+    grid.remove(i);
+    s.work += n;  // what the all-pairs search examines for this settled point
+    const VoronoiPoint& pi = points[i];
+    auto relax = [&](std::size_t j) {
+      if (seen[j] == i) return;
+      seen[j] = i;
+      ++s.candidates;
+      if (done[j]) return;
+      if (!continues_inline(pi, points[j], robot_radius_m) && !(has_edge && extra.edge(i, j)))
+        return;
+      const double nc = c + distance(pi.position, points[j].position);
+      if (nc < s.cost[j]) {
+        s.cost[j] = nc;
+        s.parent[j] = static_cast<std::int32_t>(i);
+        open.push({nc, j});
+      }
+    };
+    const double ai = static_cast<double>(pi.clearance) - robot_radius_m;
+    const bool in_range = has_edge && i >= extra.range_begin && i < extra.range_end;
+    double radius = std::max(ai > 0.0 ? ai + amax : 0.0, in_range ? emax : 0.0);
+    if (ai > 0.0 || in_range) {  // (an edge bound of 0 still joins points at one place)
+      // A margin for rounding: the exact tests decide, the grid only has to include.
+      radius += 1e-6 * (1.0 + radius + std::abs(pi.position.x) + std::abs(pi.position.y));
+      grid.for_each_near(pi.position, radius, relax);
+    }
+    for (std::size_t k = adj_begin[i]; k < adj_begin[i + 1]; ++k)
+      relax(adj[k]);
   }
   return s;
 }

@@ -15,7 +15,9 @@
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "voronav/core/occupancy.hpp"
@@ -55,7 +57,8 @@ struct VoronoiPoints {
 struct PointSearch {
   std::vector<double> cost;          ///< per point, +inf when unreached
   std::vector<std::int32_t> parent;  ///< previous point, or -1 for a start
-  std::size_t work = 0;              ///< pairs examined
+  std::size_t work = 0;              ///< pairs examined by the all-pairs search
+  std::size_t candidates = 0;        ///< pairs actually compared (= work for the all-pairs one)
 };
 
 /// Multi-source Dijkstra over `points` with edges between points that continue each other,
@@ -66,6 +69,33 @@ using ExtraEdge = std::function<bool(std::size_t, std::size_t)>;
 [[nodiscard]] PointSearch search_points(std::span<const VoronoiPoint> points,
                                         std::span<const double> start_cost, double robot_radius_m,
                                         const ExtraEdge& extra_edge = {});
+
+/// Extra edges a caller can bound, so that the search need not compare every pair of points.
+struct BoundedExtraEdges {
+  ExtraEdge edge;  ///< may be empty
+  /// edge(i, j) is false whenever the points are more than this far apart [m] (the caller
+  /// guarantees it); +inf = no bound (the search then compares every pair).
+  double max_distance_m = std::numeric_limits<double>::infinity();
+  /// edge(i, j) is false unless both i and j are in [range_begin, range_end) (the caller
+  /// guarantees it; e.g. a robot's own points): other points only look for continuing points.
+  std::size_t range_begin = 0;
+  std::size_t range_end = std::numeric_limits<std::size_t>::max();
+  /// Pairs {i, j} that edge() is asked about at any distance (e.g. consecutive points of a
+  /// driven trail); unordered, duplicates allowed.
+  std::vector<std::pair<std::size_t, std::size_t>> unbounded_pairs;
+};
+
+/// The same search as above, with the same result (cost, parent and work, bit for bit), but the
+/// candidates of each settled point come from a uniform grid of the points by position: a point
+/// is only compared with points in the grid cells that can hold one that continues it (within
+/// its (c - r) plus the largest (c - r) of all points) or that `extra.edge` may join (within
+/// `extra.max_distance_m`), plus `extra.unbounded_pairs`. `work` still counts the pairs the
+/// paper's all-pairs search examines (n per settled point), so the computation metric (eq. 8-9)
+/// keeps its meaning; `candidates` counts the pairs actually compared.
+[[nodiscard]] PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
+                                                 std::span<const double> start_cost,
+                                                 double robot_radius_m,
+                                                 const BoundedExtraEdges& extra = {});
 
 /// Chain of point indices ending at `last` by following parents.
 [[nodiscard]] std::vector<std::size_t> trace_points(const PointSearch& s, std::size_t last);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "voronav/core/error.hpp"
 
 namespace voronav::network {
@@ -103,6 +105,89 @@ TEST(VoronoiPoints, ClearanceAtMatchesDistanceToUnknown) {
   const auto m = sensed_disc(41, 15, 0.2);
   EXPECT_NEAR(clearance_at(m, m.geometry().cell_center(Cell{20, 20})), 3.0, 0.25);
   EXPECT_EQ(clearance_at(m, {-5, -5}), 0.0);
+}
+
+// The grid-bucketed search is an optimisation only: on random point sets (clustered, with
+// duplicates, points that cannot continue anything, bounded extra edges and long unbounded ones)
+// it must give the all-pairs search's costs, parents and work, and ask the extra edge about every
+// pair the all-pairs search asks about that can be true.
+TEST(VoronoiPoints, BucketedSearchEqualsAllPairsSearch) {
+  const double r = 0.2;
+  std::size_t reached_total = 0, fewer_candidates = 0;
+  for (std::uint64_t seed = 1; seed <= 150; ++seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const std::size_t n = 1 + rng() % 250;
+    const double side = 2.0 + 60.0 * u(rng);
+    const double cmax = 0.1 + 3.0 * u(rng);
+    std::vector<VoronoiPoint> pts;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i > 0 && rng() % 8 == 0) {  // a duplicate, as merged Searches carry
+        pts.push_back(pts[rng() % i]);
+        continue;
+      }
+      Vec2 p{side * u(rng), side * u(rng)};
+      if (seed % 3 == 0) p = p * 0.1 + Vec2{100.0, -50.0};  // a tight cluster off the origin
+      pts.push_back({p, static_cast<float>(cmax * u(rng)), 0.0f});
+    }
+    std::vector<double> start(n, std::numeric_limits<double>::infinity());
+    for (std::size_t k = 0; k < 1 + rng() % 3; ++k)
+      start[rng() % n] = 2.0 * u(rng);
+    const double bound = seed % 4 == 0 ? 0.0 : 6.0 * u(rng);
+    BoundedExtraEdges extra;
+    extra.max_distance_m = bound;
+    if (seed % 2 == 0) {  // the edge joins only points of a range (a robot's own points)
+      extra.range_begin = rng() % n;
+      extra.range_end = extra.range_begin + rng() % (n - extra.range_begin + 1);
+    }
+    for (std::size_t k = 0; k < rng() % 20 && n > 1; ++k)
+      extra.unbounded_pairs.emplace_back(rng() % n, rng() % n);
+    auto is_long = [&](std::size_t i, std::size_t j) {
+      for (const auto& [a, b] : extra.unbounded_pairs)
+        if ((a == i && b == j) || (a == j && b == i)) return true;
+      return false;
+    };
+    std::size_t asked_plain = 0, asked_bucketed = 0;
+    std::size_t* asked = &asked_plain;
+    auto edge = [&](std::size_t i, std::size_t j) {
+      if (is_long(i, j)) {
+        ++*asked;
+        return true;
+      }
+      const auto in = [&](std::size_t k) { return k >= extra.range_begin && k < extra.range_end; };
+      if (!in(i) || !in(j) || distance(pts[i].position, pts[j].position) > bound) return false;
+      ++*asked;
+      return (i * 31 + j * 17) % 5 == 0;  // some near pairs are joined
+    };
+    const bool with_edge = seed % 5 != 0;
+    if (with_edge) extra.edge = edge;
+    const auto plain = search_points(pts, start, r, with_edge ? ExtraEdge(edge) : ExtraEdge{});
+    asked = &asked_bucketed;
+    const auto bucketed = search_points_bucketed(pts, start, r, extra);
+    ASSERT_EQ(plain.cost, bucketed.cost) << "seed " << seed;
+    ASSERT_EQ(plain.parent, bucketed.parent) << "seed " << seed;
+    ASSERT_EQ(plain.work, bucketed.work) << "seed " << seed;
+    ASSERT_EQ(asked_plain, asked_bucketed) << "seed " << seed;
+    ASSERT_LE(bucketed.candidates, plain.candidates) << "seed " << seed;
+    fewer_candidates += bucketed.candidates < plain.candidates;
+    for (double c : plain.cost)
+      reached_total += std::isfinite(c);
+  }
+  // The sets are not trivial: many points are reached through edges, and the grid prunes.
+  EXPECT_GT(reached_total, 2000u);
+  EXPECT_GT(fewer_candidates, 50u);
+}
+
+TEST(VoronoiPoints, BucketedSearchRejectsBadInput) {
+  std::vector<VoronoiPoint> pts(2);
+  std::vector<double> start(1, 0.0);
+  EXPECT_THROW((void)search_points_bucketed(pts, start, 0.2), Error);
+  start.assign(2, 0.0);
+  BoundedExtraEdges extra;
+  extra.edge = [](std::size_t, std::size_t) { return true; };
+  extra.max_distance_m = 1.0;
+  extra.unbounded_pairs = {{0, 5}};
+  EXPECT_THROW((void)search_points_bucketed(pts, start, 0.2, extra), Error);
 }
 
 }  // namespace

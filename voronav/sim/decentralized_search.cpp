@@ -136,8 +136,13 @@ bool RobotAgent::try_continue() {
     los_cells += static_cast<std::size_t>(distance(a, b) / scen().world.resolution()) + 1;
     return segment_known_free(a, b);
   };
+  // The same search on a grid of the points (identical result and work count): own_edge is
+  // false outside [own_begin, own_end) and beyond 6 m, except between consecutive trail points.
+  BoundedExtraEdges extra{own_edge, 6.0, own_begin, own_end, {}};
+  for (std::size_t i = trail_begin; i + 1 < own_end; ++i)
+    extra.unbounded_pairs.emplace_back(i, i + 1);
   r.s_search =
-      timed([&] { return search_points(r.s_comb, start, opt().robot_radius_m, own_edge); });
+      timed([&] { return search_points_bucketed(r.s_comb, start, opt().robot_radius_m, extra); });
   report_.metrics.work += los_cells;
   report_.metrics.work += r.s_search.work;
   if (has_dest && !std::isfinite(r.s_search.cost.back())) {

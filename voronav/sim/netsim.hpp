@@ -126,7 +126,8 @@ struct NetSimOptions {
   bool repair_check_answer = true;
   /// These options with the scale options the scale runs use (bench/netsim_bench.cpp):
   /// search_timeout_per_m 2.5, search_activity_s 30, keep_bridge_on_new_search,
-  /// source_straight_start and walk_replan_whole_map (frontier_by_points stays as it is).
+  /// source_straight_start (already on by default) and walk_replan_whole_map
+  /// (frontier_by_points stays as it is).
   [[nodiscard]] NetSimOptions scale_options() const;
   bool record = false;  ///< keep a Recording of every step
   std::uint64_t seed = 1;
