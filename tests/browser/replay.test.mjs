@@ -248,6 +248,13 @@ try {
     check(new Set(cols).size === cols.length && cols.length === 60, `60 robots get ${new Set(cols).size} distinct colours`);
     const listed = await page.evaluate(() => window.voronav.listedRobots());
     check(listed.length > 0 && listed.length <= 30, `the robot list shows ${listed.length} rows, not 60`);
+    // A bar per robot: the category labels are thinned so that none overlaps another.
+    await page.locator("canvas.plot").first().scrollIntoViewIfNeeded();
+    await page.waitForFunction(() => { const c = document.querySelector("canvas.plot"); return c && c.dataset.labels; }, null, { timeout: 10000 });
+    const labels = JSON.parse(await page.$eval("canvas.plot", (c) => c.dataset.labels));
+    const overlapping = labels.filter((b, i) => i > 0 && b[0] < labels[i - 1][1]).length;
+    check(labels.length >= 2 && labels.length < 60 && overlapping === 0,
+          `60 bar labels: ${labels.length} drawn, ${overlapping} overlapping`);
     await page.fill("#robotfind", "42");
     const found = await page.evaluate(() => window.voronav.listedRobots());
     check(found.length >= 1 && found[0] === 42, "typing an id finds the robot: " + found.join(","));

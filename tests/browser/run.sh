@@ -51,6 +51,9 @@ json.dump({"format": "voronav-recording", "version": 1, "title": "many robots",
            "graphs": [{"name": "tree", "shown_from": 5.0, "nodes": [{"id": 0, "p": [3, 3]}, {"id": 1, "p": [20, 15]}], "edges": [[0, 1]]}],
            "robots": robots,
            "markers": [{"kind": "goal", "p": [25, 16], "robot": 1, "label": "goal of robot 1"}],
+           "plots": [{"kind": "bar", "title": "distance per robot", "x_label": "robot", "y_label": "m",
+                      "categories": ["robot %d" % (i + 1) for i in range(n)],
+                      "series": [{"name": "distance", "y": [1.0 + i % 7 for i in range(n)]}]}],
            "events": [{"t": 5.0, "kind": "tree", "text": "the tree is built"}] +
                      [{"t": 10.0 + 0.1 * k, "kind": "blocked", "text": "robot 3 asks for a detour", "robot": 3} for k in range(40)]},
           open(sys.argv[1], "w"))
