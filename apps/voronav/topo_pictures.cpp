@@ -8,6 +8,7 @@
 #include "voronav/core/error.hpp"
 #include "voronav/io/map_loader.hpp"
 #include "voronav/render/figure.hpp"
+#include "voronav/topology/edge_route.hpp"
 #include "voronav/topology/segmentation.hpp"
 #include "voronav/topology/topological_map.hpp"
 #include "voronav/voronoi/labeled_voronoi.hpp"
@@ -89,16 +90,18 @@ void save_stages(const OccupancyGrid& grid, const BinaryGrid& blocked,
     f.binary(blocked, wall, render::colors::kWhite);
     f.labels(m.region, 0.25);
     for (const auto& e : m.edges) {
-      const Vec2 mid = grid.geometry().cell_center(e.midpoint);
-      f.segment(m.regions[static_cast<std::size_t>(e.a)].centre_world, mid, render::colors::kBlue,
-                2.0);
-      f.segment(mid, m.regions[static_cast<std::size_t>(e.b)].centre_world, render::colors::kBlue,
-                2.0);
+      // Drawn along the Voronoi diagram (topology::edge_route), not as straight segments that
+      // would cut through walls in non-convex regions.
+      const std::vector<Cell> route = topology::edge_route(m, e);
+      for (std::size_t k = 1; k < route.size(); ++k)
+        f.segment(grid.geometry().cell_center(route[k - 1]), grid.geometry().cell_center(route[k]),
+                  render::colors::kBlue, 2.0);
+      f.marker(e.midpoint, render::colors::kBlue, 2.5);
     }
     for (const auto& r : m.regions)
       f.marker(r.centre, render::colors::kRed, 4.0);
     f.legend({{"region node", render::colors::kRed},
-              {"edge through a critical line", render::colors::kBlue}});
+              {"edge (along the Voronoi diagram) and its crossing", render::colors::kBlue}});
     f.save(dir / "f_graph.png");
   }
 }

@@ -339,7 +339,10 @@ PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
   std::vector<std::uint8_t> done(n, 0);
   std::vector<std::size_t> seen(n, n);  // the settled point that last compared j
   while (!open.empty()) {
-    const auto [c, i] = open.top();
+    // Plain variables, not a structured binding: the lambda below captures them (C++20 allows
+    // capturing bindings, clang before 16 does not).
+    const double c = open.top().first;
+    const std::size_t i = open.top().second;
     open.pop();
     if (done[i]) continue;
     done[i] = 1;
