@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <system_error>
 
 #include "voronav/core/error.hpp"
 #include "voronav/io/movingai.hpp"
@@ -22,7 +23,10 @@ const char* to_string(MapFormat format) {
 }
 
 LoadedMap load_map(const std::filesystem::path& path, const FloorplanOptions& image_options) {
-  if (!std::filesystem::exists(path)) throw Error(path.string(), 0, "map file not found");
+  std::error_code ec;  // no throw for names the file system refuses (too long, ...)
+  if (!std::filesystem::exists(path, ec))
+    throw Error(path.string(), 0,
+                "map file not found" + (ec ? " (" + ec.message() + ")" : std::string()));
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });

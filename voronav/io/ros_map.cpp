@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <system_error>
 
 #include "voronav/core/error.hpp"
 #include "voronav/core/read_file.hpp"
@@ -136,7 +137,8 @@ RosMap read_ros_map(const fs::path& yaml_path) {
     throw Error(yaml_path.string(), line_of(root["free_thresh"]),
                 "mode scale needs free_thresh < occupied_thresh");
   const fs::path image_path = m.image.is_absolute() ? m.image : yaml_path.parent_path() / m.image;
-  if (!fs::exists(image_path))
+  std::error_code exists_ec;  // no throw for names the file system refuses (too long, ...)
+  if (!fs::exists(image_path, exists_ec))
     throw Error(
         yaml_path.string(), line_of(image),
         "image '" + m.image.string() + "' not found (looked for " + image_path.string() + ")");

@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 #include <string_view>
+#include <system_error>
 
 #include "voronav/core/error.hpp"
 #include "voronav/core/read_file.hpp"
@@ -149,8 +150,10 @@ OccupancyGrid load_world(const Reader& rd, const YAML::Node& n, const fs::path& 
   if (p.is_relative()) p = file.parent_path() / p;
   p = p.lexically_normal();
   resolved = p.string();
-  if (!fs::exists(p))
-    rd.fail(n, "world: map file '" + n.Scalar() + "' not found (looked for " + resolved + ")");
+  std::error_code exists_ec;  // no throw for names the file system refuses (too long, ...)
+  if (!fs::exists(p, exists_ec))
+    rd.fail(n, "world: map file '" + n.Scalar() + "' not found (looked for " + resolved +
+                   (exists_ec ? ": " + exists_ec.message() : std::string()) + ")");
   io::LoadedMap m;
   try {
     m = io::load_map(p);

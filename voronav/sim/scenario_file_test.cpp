@@ -239,6 +239,14 @@ TEST_F(MalformedScenario, WorldFileMissing) {
   expect_error(t, 1, "world: map file 'nothing.yaml' not found");
 }
 
+TEST_F(MalformedScenario, WorldFileNameTooLongIsAnErrorNotAFileSystemException) {
+  // Found by fuzz_netsim_scenario: a name longer than NAME_MAX made std::filesystem throw.
+  std::string t = kGood;
+  const std::string name(400, 'w');
+  t.replace(t.find("room.yaml"), 9, name);
+  expect_error(t, 1, "world: map file '" + name + "' not found");
+}
+
 TEST_F(MalformedScenario, NegativeAndBadNumbersNameTheField) {
   std::string t = kGood;
   t.replace(t.find("2.5"), 3, "-1");
