@@ -6,6 +6,7 @@
 #include <map>
 
 #include "voronav/sim/netsim.hpp"
+#include "voronav/sim/test_halls.hpp"
 
 namespace voronav::sim {
 namespace {
@@ -15,25 +16,7 @@ namespace {
 // half of the hall at x 20..20.8 m (y 0.4..4 m): the upper half (y 4..7.6 m) stays open, and
 // the robots of the upper row near the block know that way around it.
 NetSimScenario hall(double after_route_s) {
-  const double res = 0.2;
-  const int w = 150, h = 40;
-  NetSimScenario sc;
-  sc.world = OccupancyGrid(GridGeometry{w, h, res, {}}, kOccupied);
-  for (int y = 2; y < h - 2; ++y)
-    for (int x = 2; x < w - 2; ++x)
-      sc.world[Cell{x, y}] = kFree;
-  for (double x = 1.5; x < 29.0; x += 3.5) {
-    sc.robots.push_back({x, 2.5});
-    sc.robots.push_back({x, 5.5});
-  }
-  sc.destination = {28.5, 2.5};
-  ObstacleChange ch;
-  ch.after_route_s = after_route_s;
-  for (int y = 2; y < 20; ++y)
-    for (int x = 100; x < 104; ++x)
-      ch.cells.push_back({x, y});
-  sc.changes.push_back(ch);
-  return sc;
+  return testing::two_row_hall(40, after_route_s);
 }
 
 struct Counted {

@@ -4,12 +4,14 @@
 
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include "voronav/core/cell_iterators.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/network/sim_radio.hpp"
 #include "voronav/sim/robot_agent.hpp"
 #include "voronav/sim/scenarios.hpp"
+#include "voronav/sim/test_halls.hpp"
 
 namespace voronav::sim {
 namespace {
@@ -115,27 +117,7 @@ TEST(NetSim, CentralizedCorridorArrivesAlongTheCorridor) {
 // A hall 30 x 8 m with robots in two rows; after the route is found a block appears on it next
 // to a relay robot.
 NetSimScenario hall_with_block(bool block) {
-  const double res = 0.2;
-  const int w = 150, h = 44;
-  NetSimScenario sc;
-  sc.world = OccupancyGrid(GridGeometry{w, h, res, {}}, kOccupied);
-  for (int y = 2; y < h - 2; ++y)
-    for (int x = 2; x < w - 2; ++x)
-      sc.world[Cell{x, y}] = kFree;
-  for (double x = 1.5; x < 29.0; x += 3.5) {
-    sc.robots.push_back({x, 2.5});
-    sc.robots.push_back({x, 5.5});
-  }
-  sc.destination = {28.5, 2.5};
-  if (block) {
-    ObstacleChange ch;
-    ch.after_route_s = 1.0;
-    for (int y = 2; y < 20; ++y)
-      for (int x = 100; x < 104; ++x)
-        ch.cells.push_back({x, y});  // x 20..20.8 m, y 0.4..4 m
-    sc.changes.push_back(ch);
-  }
-  return sc;
+  return testing::two_row_hall(44, block ? std::optional<double>(1.0) : std::nullopt);
 }
 
 TEST(NetSim, BlockedRouteIsRepairedLocallyWithFewerMessagesThanACentralizedReplan) {
