@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "voronav/core/cell_iterators.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/sim/agent_internal.hpp"
 
@@ -27,6 +28,40 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> RobotAgent::find_break(
   }
   report_.metrics.work += path.size();
   return br;
+}
+
+/// With repair_rejoin_m > 0: the end of the break `br` of `path` moved past every route point
+/// closer than repair_rejoin_m to a cell that blocks one of the broken moves (an occupied cell
+/// within the robot radius of it, in this robot's map). The robot sees only the front of a new
+/// obstacle, so the first route point after the blocked move can lie inside it (its cell still
+/// unknown) or right beside it, and a detour that re-joins there runs into the obstacle again
+/// (s1r6, docs/reproductions/networked.md, fourth pass). The last point (the destination) stays.
+std::uint32_t RobotAgent::rejoin_past_block(const std::vector<VoronoiPoint>& path,
+                                            std::pair<std::uint32_t, std::uint32_t> br) {
+  std::uint32_t to = br.second;
+  const double margin = opt().repair_rejoin_m;
+  if (margin <= 0.0) return to;
+  const auto& g = r_.map.world();
+  const double rad = opt().robot_radius_m / g.resolution - 0.01;
+  std::vector<Vec2> block;
+  for (std::uint32_t i = br.first; i < br.second && i + 1 < path.size(); ++i) {
+    const auto a = g.world_to_cell(path[i].position), b = g.world_to_cell(path[i + 1].position);
+    if (!a || !b) continue;
+    for_each_line_cell(*a, *b, [&](Cell c) {
+      for_each_disc_cell(c, rad, [&](Cell d) {
+        if (r_.map.at(d) == kOccupied) block.push_back(g.cell_center(d));
+        return true;
+      });
+      return true;
+    });
+  }
+  report_.metrics.work += block.size();
+  auto near_block = [&](Vec2 p) {
+    return std::any_of(block.begin(), block.end(), [&](Vec2 q) { return distance(p, q) < margin; });
+  };
+  while (to + 1 < path.size() && near_block(path[to].position))
+    ++to;
+  return to;
 }
 
 /// Shrinks the free disc of every point of `path` to the nearest cell this robot knows occupied:
@@ -136,8 +171,9 @@ void RobotAgent::check_relay_route() {
     return;
   relay_break_ = ends;
   ++report_.repairs;
+  const std::uint32_t to = rejoin_past_block(path, *br);
   shrink_to_map(path);  // so the Repair tells the others which free discs the change cut
-  auto fixed = detour(path, br->first, br->second);
+  auto fixed = detour(path, br->first, to);
   if (!fixed.empty()) {
     // Its own detour goes to the source like an answer; it counts as a Repair executed when the
     // source takes it (splice_route).
@@ -156,7 +192,7 @@ void RobotAgent::check_relay_route() {
   m.relays.push_back(r.id);
   m.whole_path = path;
   m.broken_from = br->first;
-  m.broken_to = br->second;
+  m.broken_to = to;
   r.repairs_seen.insert(m.num);
   log_repair(false, "finds the route blocked and asks its neighbours (Repair message)");
   broadcast(m, 1);
@@ -310,8 +346,9 @@ void RobotAgent::check_source_route() {
   NS_DEBUG("t=%.1f source blocked at (%.1f,%.1f), break %u-%u of %zu\n", now_, s.pos.x, s.pos.y,
            br->first, br->second, rest.size());
   ++report_.repairs;
+  const std::uint32_t to = rejoin_past_block(rest, *br);
   shrink_to_map(rest);  // as in check_relay_route
-  auto fixed = detour(rest, br->first, br->second);
+  auto fixed = detour(rest, br->first, to);
   NS_DEBUG("t=%.1f source own detour %zu\n", now_, fixed.size());
   if (!fixed.empty()) {
     ++report_.repairs_executed;
@@ -330,7 +367,7 @@ void RobotAgent::check_source_route() {
   m.relays = {s.id};
   m.whole_path = rest;
   m.broken_from = br->first;
-  m.broken_to = br->second;
+  m.broken_to = to;
   s.repairs_seen.insert(m.num);
   log_repair(false, "is blocked and asks its neighbours (Repair message)");
   repair_out_ = m;

@@ -72,6 +72,8 @@ void NetSimOptions::validate() const {
     throw Error("netsim.search_activity_s", 0, "expected a finite number >= 0");
   if (!(repair_resend_s >= 0.0) || !std::isfinite(repair_resend_s))
     throw Error("netsim.repair_resend_s", 0, "expected a finite number >= 0");
+  if (!(repair_rejoin_m >= 0.0) || !std::isfinite(repair_rejoin_m))
+    throw Error("netsim.repair_rejoin_m", 0, "expected a finite number >= 0");
   if (!(path_wait_s >= 0.0) || !std::isfinite(path_wait_s))
     throw Error("netsim.path_wait_s", 0, "expected a finite number >= 0");
   if (max_search_attempts < 1 || link_retries < 0 || hop_limit < 1 || hop_limit > 255 ||

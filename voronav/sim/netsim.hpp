@@ -124,6 +124,11 @@ struct NetSimOptions {
   /// route ahead is free in its own map (it has seen the change; the answerer's map may be older);
   /// the first answer that passes wins, later ones are ignored (docs/reproductions/networked.md).
   bool repair_check_answer = true;
+  /// Decentralized, not in the paper: a robot that finds its route broken moves the end of the
+  /// break past every route point closer than this to a cell that blocks the broken moves, so no
+  /// detour re-joins the route inside or beside the new obstacle, of which it sees only the front
+  /// (docs/reproductions/networked.md, fourth pass) [m]; 0 = the first point after the block.
+  double repair_rejoin_m = 1.0;
   /// These options with the scale options the scale runs use (bench/netsim_bench.cpp):
   /// search_timeout_per_m 2.5, search_activity_s 30, keep_bridge_on_new_search,
   /// source_straight_start (already on by default) and walk_replan_whole_map

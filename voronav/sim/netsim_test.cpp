@@ -215,19 +215,33 @@ TEST(NetSim, BadInputIsRejected) {
   EXPECT_THROW((void)make_paper_run(1, 17), Error);
 }
 
-TEST(Scenarios, Table7RunsShareWorldsAndAddChanges) {
-  const auto a = make_paper_run(2, 1), b = make_paper_run(2, 5), c = make_paper_run(2, 13);
-  EXPECT_EQ(a.world, b.world);
-  EXPECT_EQ(a.robots, b.robots) << "run 5 is run 1's placement with one change";
+// Table 7: runs 1, 5, 9, 13 share a placement and have 0, 1, 2, 3 obstacle changes. Each change
+// is timed on runs with the changes before it (scenarios.cpp, extend_changes); timed on the
+// change-free runs, as before the fourth pass of issue #13, s1r13 got 1 change instead of 3.
+TEST(Scenarios, Table7RunsShareWorldsAndGetTheirChanges) {
+  const auto a = make_paper_run(1, 1), c = make_paper_run(1, 13);
+  EXPECT_EQ(a.world, c.world);
+  EXPECT_EQ(a.robots, c.robots) << "run 13 is run 1's placement with three changes";
   EXPECT_EQ(a.robots.size(), 6u);
   EXPECT_TRUE(a.changes.empty());
-  // Changes are placed only where a door lies on the routes in use (time_changes_on_routes):
-  // at most the 1 / 3 changes of Table 7, each at a simulated time.
-  EXPECT_LE(b.changes.size(), 1u);
-  EXPECT_LE(c.changes.size(), 3u);
-  for (const auto& ch : c.changes)
-    EXPECT_GE(ch.at_s, 0.0);
-  EXPECT_NE(make_paper_run(2, 2).robots, a.robots);
+  ASSERT_EQ(c.changes.size(), 3u) << "Table 7: the third obstacle change";
+  const auto b = make_paper_run(1, 9);
+  ASSERT_EQ(b.changes.size(), 2u) << "Table 7: the second obstacle change";
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_EQ(b.changes[k].cells, c.changes[k].cells) << "runs 9 and 13 share change " << k + 1;
+  for (std::size_t k = 1; k < c.changes.size(); ++k) {
+    EXPECT_GE(c.changes[k].at_s, c.changes[k - 1].at_s + 4.0);
+    EXPECT_GE(c.changes[k].centralized_at_s, c.changes[k - 1].centralized_at_s + 4.0);
+  }
+  for (Method m : {Method::kCentralized, Method::kDecentralized}) {
+    NetSimOptions o;
+    o.method = m;
+    const auto r = run_netsim(c, o).metrics;
+    EXPECT_TRUE(r.success) << to_string(m);
+    EXPECT_EQ(r.changes_applied, 3) << to_string(m);
+    EXPECT_EQ(r.changes_on_route, 3) << to_string(m) << ": every change on the route ahead";
+  }
+  EXPECT_NE(make_paper_run(2, 2).robots, make_paper_run(2, 1).robots);
   EXPECT_EQ(make_paper_run(3, 1).robots.size(), 12u);
   EXPECT_NEAR(make_paper_run(4, 1).world.width() * 0.2, 80.0, 0.5);
 }

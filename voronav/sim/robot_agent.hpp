@@ -228,6 +228,8 @@ class RobotAgent {
   // decentralized: Repair (Tables 4-5)
   std::optional<std::pair<std::uint32_t, std::uint32_t>> find_break(
       const std::vector<network::VoronoiPoint>& path, std::size_t from);
+  [[nodiscard]] std::uint32_t rejoin_past_block(const std::vector<network::VoronoiPoint>& path,
+                                                std::pair<std::uint32_t, std::uint32_t> br);
   void shrink_to_map(std::vector<network::VoronoiPoint>& path);
   std::vector<network::VoronoiPoint> detour(std::vector<network::VoronoiPoint> path,
                                             std::uint32_t from, std::uint32_t to);

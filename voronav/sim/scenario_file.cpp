@@ -191,6 +191,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
            "repair_timeout_s",
            "repair_resend_s",
            "repair_check_answer",
+           "repair_rejoin_m",
            "search_timeout_per_m",
            "search_activity_s",
            "keep_bridge_on_new_search",
@@ -232,6 +233,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   pos("collect_s", o.collect_s);
   pos("repair_timeout_s", o.repair_timeout_s);
   nonneg("repair_resend_s", o.repair_resend_s);
+  nonneg("repair_rejoin_m", o.repair_rejoin_m);
   nonneg("search_timeout_per_m", o.search_timeout_per_m);
   nonneg("search_activity_s", o.search_activity_s);
   auto flag = [&](const char* key, bool& v) {
@@ -478,6 +480,7 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
       << "  repair_timeout_s: " << fmt(o.repair_timeout_s) << "\n"
       << "  repair_resend_s: " << fmt(o.repair_resend_s) << "\n"
       << "  repair_check_answer: " << (o.repair_check_answer ? "true" : "false") << "\n"
+      << "  repair_rejoin_m: " << fmt(o.repair_rejoin_m) << "\n"
       << "  search_timeout_per_m: " << fmt(o.search_timeout_per_m) << "\n"
       << "  search_activity_s: " << fmt(o.search_activity_s) << "\n"
       << "  keep_bridge_on_new_search: " << (o.keep_bridge_on_new_search ? "true" : "false") << "\n"

@@ -47,13 +47,15 @@ struct PlacementOptions {
                                           const PlacementOptions& options,
                                           std::optional<Vec2> destination = std::nullopt);
 
-/// Replaces the changes of `sc` by `changes` closed doors on both methods' routes while they are
-/// in use (issue #13): runs both methods once without changes (default options) and picks doors
-/// both sources drive through after they have their routes; each door closes when the source of
-/// each method is 5 m (along its trajectory) before it (at_s for the decentralized method,
-/// centralized_at_s for the centralized one: the same place and the same situation, at each
-/// method's own time), keeping the destination reachable; later changes at least every_s after
-/// the previous one for both. Fewer changes when no such door exists (the run records it).
+/// Replaces the changes of `sc` by up to `changes` obstacle changes on both methods' routes while
+/// they are in use (issue #13): a door both sources drive through closes, or where none can close
+/// without cutting off the destination a 0.8 m box is put down where both pass; each when the
+/// source of each method is 1.5-3 m before it on its route (at_s for the decentralized method,
+/// centralized_at_s for the centralized one: the same place and situation, at each method's own
+/// time), keeping the destination reachable; later changes at least every_s after the previous
+/// one for both. Change k is timed on runs (default options) with changes 1..k-1 and kept only
+/// when a run of each method with it meets every change on the route ahead. Fewer changes when
+/// no candidate passes (the run records it).
 void time_changes_on_routes(const OfficeWorld& world, NetSimScenario& sc, int changes,
                             double every_s, double robot_radius_m);
 
