@@ -177,10 +177,14 @@ void RobotAgent::check_relay_route() {
   if (!fixed.empty()) {
     // Its own detour goes to the source like an answer; it counts as a Repair executed when the
     // source takes it (splice_route).
+    // `owners` (one per point of the first route) no longer matches the repaired path: a Path
+    // with a mismatched list does not decode, so the source never got this detour (s3r12).
     PathMessage p = *r.saved;
     p.num = next_repair_num();
     p.whole_path = fixed;
+    p.owners.clear();
     r.saved->whole_path = fixed;
+    r.saved->owners.clear();
     relay_break_.reset();
     if (!p.relays.empty()) send_reliable(p.relays.back(), p);
     return;
@@ -240,6 +244,7 @@ void RobotAgent::on_repair_path(PathMessage m, RobotId from) {
     if (at == w.end()) at = w.begin();  // not on it: the answer replaces it (as before)
     w.erase(at, w.end());
     w.insert(w.end(), m.whole_path.begin(), m.whole_path.end());
+    r.saved->owners.clear();  // one per point of the first route: no longer matches
     relay_break_.reset();
   }
   if (!m.relays.empty()) send_reliable(m.relays.back(), m);
