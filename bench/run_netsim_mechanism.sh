@@ -3,8 +3,9 @@
 # for N = 1..4 and prints markdown tables that say which mechanism produced each result: who found
 # the route (route_found_by), Paths lost, Repairs executed, whether the obstacle changes hit the
 # route in use, the eq. 2 route length, the source's driving and the relays' driving, traffic with
-# and without changes; then, per change run, the messages of each kind both methods sent (the
-# trace behind the traffic comparison).
+# and without changes; the paper's claims side by side (travel, traffic, computation); the bytes
+# of each message kind (means over change-free and change runs); then, per change run, the
+# messages of each kind both methods sent (the trace behind the traffic comparison).
 # Usage: bench/run_netsim_mechanism.sh [build-dir] [runs (default 16)] [folder to keep the JSON]
 # With a folder that already holds sN.json, those are read instead of running scenario N again.
 set -euo pipefail
@@ -47,6 +48,42 @@ for s in (1, 2, 3, 4):
               f"{mean('route_length_m', ok):.1f} | {mean('source_travel_m', ok):.1f} | "
               f"{mean('relay_travel_m', ok):.1f} | {mean('traffic_bytes', nochange):.0f} | "
               f"{mean('traffic_bytes', change):.0f} |")
+print()
+print("The paper's claims side by side (means over successful runs for travel; over all runs "
+      "otherwise): centralized source travel vs decentralized eq. 2 route and source travel "
+      "(figures 30-33), traffic without / with changes (figures 22-25), computation total and of "
+      "the busiest robot (work units, eq. 8-9; figures 26-29, 34-37).")
+print()
+print("| scenario | travel c [m] | route eq. 2 d [m] | source drove d [m] | traffic no change c / d [B] | "
+      "traffic with changes c / d [B] | computation c / d | busiest robot c / d |")
+print("|---|---|---|---|---|---|---|---|")
+for s, j in data.items():
+    c, dd = j["centralized"]["per_run"], j["decentralized"]["per_run"]
+    def m(rs, k, only_ok=False, cond=lambda r: True):
+        v = [r[k] for r in rs if cond(r) and (r["success"] or not only_ok)]
+        return statistics.mean(v) if v else float("nan")
+    nc = lambda r: r["changes_applied"] == 0
+    wc = lambda r: r["changes_applied"] > 0
+    print(f"| {s} | {m(c, 'source_travel_m', True):.1f} | {m(dd, 'route_length_m', True):.1f} | "
+          f"{m(dd, 'source_travel_m', True):.1f} | {m(c, 'traffic_bytes', cond=nc):.0f} / "
+          f"{m(dd, 'traffic_bytes', cond=nc):.0f} | {m(c, 'traffic_bytes', cond=wc):.0f} / "
+          f"{m(dd, 'traffic_bytes', cond=wc):.0f} | {m(c, 'computation'):.3g} / {m(dd, 'computation'):.3g} | "
+          f"{m(c, 'max_robot_computation'):.3g} / {m(dd, 'max_robot_computation'):.3g} |")
+print()
+print("Traffic by message kind: mean bytes per run (change-free runs / change runs).")
+print()
+print("| scenario | method | " + " | ".join(["request", "ack", "notify", "search", "path", "repair", "link_ack"]) + " |")
+print("|---|---|" + "---|" * 7)
+for s, j in data.items():
+    for meth in ("centralized", "decentralized"):
+        rs = j[meth]["per_run"]
+        cells = []
+        for k in ["request", "ack", "notify", "search", "path", "repair", "link_ack"]:
+            def mb(cond):
+                v = [r.get("sent_by_type", {}).get(k, {}).get("bytes", 0) for r in rs if cond(r)]
+                return statistics.mean(v) if v else float("nan")
+            cells.append(f"{mb(lambda r: r['changes_applied'] == 0):.0f} / {mb(lambda r: r['changes_applied'] > 0):.0f}")
+        print(f"| {s} | {meth} | " + " | ".join(cells) + " |")
 print()
 print("Change runs: changes placed / on the route (centralized, decentralized), Repairs executed "
       "(decentralized), traffic [B] and messages sent by kind (`kind count`, all robots).")
