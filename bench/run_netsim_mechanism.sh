@@ -8,6 +8,7 @@
 # messages of each kind both methods sent (the trace behind the traffic comparison).
 # Usage: bench/run_netsim_mechanism.sh [build-dir] [runs (default 16)] [folder to keep the JSON]
 # With a folder that already holds sN.json, those are read instead of running scenario N again.
+# SCENARIOS="1 3" restricts the scenarios (default: 1 2 3 4).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/default}
@@ -21,11 +22,12 @@ else
   tmp=$(mktemp -d)
   trap 'rm -rf "$tmp"' EXIT
 fi
-for s in 1 2 3 4; do
+scenarios=${SCENARIOS:-1 2 3 4}
+for s in $scenarios; do
   [ -s "$tmp/s$s.json" ] && continue
   "$cli" netsim --scenario "$s" --runs "$runs" --method both --json --quiet > "$tmp/s$s.json"
 done
-/usr/bin/python3 - "$tmp" <<'PY'
+/usr/bin/python3 - "$tmp" $scenarios <<'PY'
 import json, os, statistics, sys
 d = sys.argv[1]
 print("| scenario | method | success | route by relays / source alone / none | Paths lost | "
@@ -33,7 +35,7 @@ print("| scenario | method | success | route by relays / source alone / none | P
       "source drove [m] | relays drove [m] | traffic no change [B] | traffic with changes [B] |")
 print("|---|---|---|---|---|---|---|---|---|---|---|---|")
 data = {}
-for s in (1, 2, 3, 4):
+for s in map(int, sys.argv[2:]):
     j = data[s] = json.load(open(os.path.join(d, f"s{s}.json")))
     for m in ("centralized", "decentralized"):
         v = j[m]
