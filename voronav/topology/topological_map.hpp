@@ -49,6 +49,24 @@ struct TopologyOptions {
   double rise_ratio = 0.25;
   /// Critical points wider than this door width [m] (2 x clearance) are ignored; 0 = no limit.
   double max_door_width = 0.0;
+  /// The rise test of a critical point walks at most this far [m] along the diagram and
+  /// continues across junctions into every other branch (a branch that rises suffices);
+  /// 0 = the walk stays on the point's own edge, unbounded (the earlier rule).
+  double max_rise_walk = 0.0;
+  /// A minimum whose clearance stays within one cell of it along at least this length [m] is a
+  /// passage (a corridor): it is cut at its ends where the clearance rises, not in its middle,
+  /// also when only one end rises; 0 = off.
+  double passage_length = 0.0;
+  /// A passage end is cut only where the clearance beyond it reaches (1 + this) x the
+  /// passage's clearance (a room opens, not a bump in the corridor).
+  double passage_rise_ratio = 1.0;
+  /// Obstacle components (8-connected) smaller than this [m^2] are free-standing furniture; a
+  /// critical point with a basis point on one is not a door and is dropped; 0 = off.
+  double min_wall_area = 0.0;
+  /// Room test of the critical lines: a line is dropped (its two sides merged) when a side holds
+  /// no cell whose clearance reaches the rise its critical point needs (a region no wider than
+  /// its doors is not a room).
+  bool validate_sides = false;
   /// Regions smaller than this [m^2] are merged into a neighbour (see the file comment).
   double min_region_area = 1.0;
 };
