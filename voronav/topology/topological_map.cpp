@@ -328,11 +328,10 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     if (comp[i] >= 0) area[static_cast<std::size_t>(comp[i])] += res * res;
   UnionFind uf(ncomp);
   const double min_area = o.min_region_area;
-  // 2b. Room test of the critical lines: a line stays only when both regions it separates are
-  // wider than the line, i.e. each holds a cell whose clearance reaches the rise a critical point
-  // needs (max(min_rise, rise_ratio x its clearance) above it); a region no wider than its doors
-  // (the ring between a table and the chairs around it, a strip between furniture) is not a room
-  // and joins the other side. Repeated until no line fails.
+  // 2b. Room test of the critical lines (validate_sides): a line stays only when one of the two
+  // regions it separates is wider than the line, i.e. holds a cell whose clearance reaches the
+  // rise of a passage end; two regions no wider than the line between them are pieces of one
+  // passage (a corridor cut at a small widening) and are joined. Repeated until no line fails.
   if (o.validate_sides) {
     std::vector<double> widest(static_cast<std::size_t>(ncomp), 0.0);
     for (std::size_t i = 0; i < comp.size(); ++i)
