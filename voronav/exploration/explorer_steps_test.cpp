@@ -1,5 +1,6 @@
-// run_exploration steps through core::Stepper: the step count covers the time limit, frames are
-// stamped at the end of their step (t = k * dt), and a limit over 1e9 steps is refused.
+// run_exploration steps through the Stepper (core/stepper.hpp): the step count covers the time
+// limit, frames are stamped at the end of their step (t = k * dt), and a limit over 1e9 steps is
+// refused.
 #include <gtest/gtest.h>
 
 #include <string>

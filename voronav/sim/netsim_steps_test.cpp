@@ -1,5 +1,6 @@
-// run_netsim steps through core::Stepper: the step count covers the time limit, every recorded
-// step is stamped t_k = k * dt, and a limit over 1e9 steps is refused naming the option.
+// run_netsim steps through the Stepper (core/stepper.hpp): the step count covers the time limit,
+// every recorded step is stamped t_k = k * dt, and a limit over 1e9 steps is refused naming the
+// option.
 #include <gtest/gtest.h>
 
 #include <string>
