@@ -844,7 +844,12 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     for (std::size_t k = 0; k < prunes_.size(); ++k) {
       deltas =
           prunes_[k].update(thins_[k].out(), deltas, d2_, keys, max_spur(), &stats.skeleton_work);
-      deltas = thins_[k + 1].update(prunes_[k].out(), deltas, d2_, thin_keys, &stats.skeleton_work);
+      // The pruned input is a subset of thins_[k]'s output, a fixed point of the thinning: only
+      // the changes near pruned or removed cells are replayed.
+      deltas = thins_[k + 1].update(prunes_[k].out(), deltas, d2_, thin_keys, &stats.skeleton_work,
+                                    &thins_[k].out());
+      stats.rethin_dormant += thins_[k + 1].last_dormant();
+      stats.rethin_woken += thins_[k + 1].last_woken();
     }
   }
   stats.changed_diagram = deltas.size();

@@ -101,9 +101,11 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
                                             const std::vector<Delta>& in_changes,
                                             const std::vector<std::int64_t>& key,
                                             const std::vector<std::size_t>& key_changes,
-                                            std::size_t* work) {
+                                            std::size_t* work,
+                                            const std::vector<std::uint8_t>* fixed_point) {
   key_ = &key;
   const auto w = static_cast<std::ptrdiff_t>(r_.width);
+  const auto h = static_cast<std::ptrdiff_t>(r_.height);
   const auto uw = static_cast<std::size_t>(r_.width);
   std::vector<Rec>& recs = recs_;
   recs.clear();
@@ -116,37 +118,107 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
   // the records at every step reads no per-cell array.
   auto touch = [&](std::size_t c, std::uint8_t old_in) -> Rec& {
     CellState& cc = cells_[c];
-    if (cc.rec > 0) return recs[cc.rec - 1];
-    cc.rec = static_cast<std::uint32_t>(recs.size()) + 1;
+    if (cc.rec & kRecIndex) return recs[(cc.rec & kRecIndex) - 1];
+    cc.rec = (cc.rec & ~kRecIndex) | (static_cast<std::uint32_t>(recs.size()) + 1);
     recs.push_back({c, old_in, in[c], removed_at(c), removed_at(c),
                     static_cast<std::int32_t>(c % uw), static_cast<std::int32_t>(c / uw), false});
     return recs.back();
   };
-  int last_change = -1;  // the step of the latest set_removed_at (-1: before the first step)
+  int last_change = -1;  // the step of the latest change of the replay's inputs (-1: before)
   int step = -1;
+  std::vector<Rec>& perm = perm_;
+  perm.clear();
+  auto activate = [&](std::size_t c) {
+    Rec& rec = recs[(cells_[c].rec & kRecIndex) - 1];
+    if (!rec.active) {
+      rec.active = true;
+      active.push_back((cells_[c].rec & kRecIndex) - 1);
+    }
+  };
+  // The cells within 2 of c (clamped to the raster).
+  auto around2 = [&](std::size_t c, auto&& f) {
+    const auto x = static_cast<std::ptrdiff_t>(c % uw), y = static_cast<std::ptrdiff_t>(c / uw);
+    const std::ptrdiff_t x0 = std::max<std::ptrdiff_t>(0, x - 2), x1 = std::min(w - 1, x + 2);
+    for (std::ptrdiff_t yy = std::max<std::ptrdiff_t>(0, y - 2); yy <= std::min(h - 1, y + 2); ++yy)
+      for (std::ptrdiff_t xx = x0; xx <= x1; ++xx)
+        if (f(static_cast<std::size_t>(yy * w + xx))) return true;
+    return false;
+  };
+  // Dormant changes (see fixed_point in the header) wake up when the replay removes a cell
+  // within 2 of them: from the next step on the cells between may see a dead cell of the
+  // fixed point.
+  std::size_t dormant = 0;
+  last_woken_ = 0;
+  auto wake_around = [&](std::size_t c) {
+    around2(c, [&](std::size_t y) {
+      std::uint32_t& r = cells_[y].rec;
+      if (r & kDormantChange) {
+        r &= ~kDormantChange;
+        --dormant;
+        ++last_woken_;
+        touch(y, in[y] ? 0 : 1);
+        activate(y);
+        last_change = step;
+      }
+      if (r & kDormantKey) {
+        r &= ~kDormantKey;
+        --dormant;
+        ++last_woken_;
+        if (in[y])
+          perm.push_back({y, 1, 1, 0, 0, static_cast<std::int32_t>(y % uw),
+                          static_cast<std::int32_t>(y / uw), false});
+        last_change = step;
+      }
+      return false;
+    });
+  };
   auto set_removed_at = [&](std::size_t c, std::int32_t t) {
     last_change = step;
     Rec& rec = touch(c, in[c]);
     rec.new_removed_at = t;
     set_removed(c, t);
-    if (!rec.active) {
-      rec.active = true;
-      active.push_back(cells_[c].rec - 1);
-    }
+    activate(c);
+    if (dormant > 0 && t != kNever) wake_around(c);
   };
-  for (const Delta& d : in_changes) {
+  // With a fixed point F of the input: a change or key change matters only within 2 of a cell
+  // of F that is dead at some step, in the stored run (removed there) or the new one (not in
+  // the input, or removed by the replay); the others start dormant. Decided before any removal
+  // step is reset.
+  std::vector<std::uint8_t>& relevant = relevant_;
+  relevant.clear();
+  if (fixed_point) {
+    const std::vector<std::uint8_t>& f = *fixed_point;
+    auto hot = [&](std::size_t c) {
+      return around2(c, [&](std::size_t y) { return (f[y] && !in[y]) || cells_[y].removed != 0; });
+    };
+    for (const Delta& d : in_changes)
+      relevant.push_back(hot(d.cell) ? 1 : 0);
+    for (const std::size_t k : key_changes)
+      relevant.push_back(!in[k] || hot(k) ? 1 : 0);
+  }
+  for (std::size_t i = 0; i < in_changes.size(); ++i) {
+    const Delta& d = in_changes[i];
+    if (!relevant.empty() && !relevant[i]) {
+      if (!(cells_[d.cell].rec & kDormantChange)) ++dormant;
+      cells_[d.cell].rec |= kDormantChange;
+      continue;
+    }
     touch(d.cell, d.old_value);
     set_removed_at(d.cell, kNever);  // decided again below
   }
   // Cells of the set whose key changed: dirty at every step while they are alive (the key of a
   // dead cell is never read again, so it leaves the list).
-  std::vector<Rec>& perm = perm_;
-  perm.clear();
-  for (const std::size_t k : key_changes)
-    if (in[k]) {
-      perm.push_back({k, 1, 1, 0, 0, static_cast<std::int32_t>(k % uw),
-                      static_cast<std::int32_t>(k / uw), false});
+  for (std::size_t i = 0; i < key_changes.size(); ++i) {
+    const std::size_t k = key_changes[i];
+    if (!in[k]) continue;
+    if (!relevant.empty() && !relevant[in_changes.size() + i]) {
+      if (!(cells_[k].rec & kDormantKey)) ++dormant;
+      cells_[k].rec |= kDormantKey;
+      continue;
     }
+    perm.push_back({k, 1, 1, 0, 0, static_cast<std::int32_t>(k % uw),
+                    static_cast<std::int32_t>(k / uw), false});
+  }
 
   std::vector<std::size_t>& cand = cand_;
   const int old_steps = steps_;
@@ -242,7 +314,20 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
     if (quiet >= 4 && t - 3 >= old_steps) break;
   }
   steps_ = std::max(old_steps, last + 1);
+  last_dormant_ = dormant + last_woken_;
   std::vector<Delta> out;
+  if (dormant > 0) {
+    // Still dormant: kept in both runs; the output follows the input there.
+    for (const Delta& d : in_changes) {
+      std::uint32_t& r = cells_[d.cell].rec;
+      if (!(r & kDormantChange)) continue;
+      r &= ~kDormantChange;
+      out_[d.cell] = in[d.cell];
+      out.push_back({d.cell, d.old_value});
+    }
+    for (const std::size_t k : key_changes)
+      cells_[k].rec &= ~kDormantKey;
+  }
   for (const Rec& rec : recs) {
     cells_[rec.cell].rec = 0;
     const std::uint8_t was = rec.old_in && rec.old_removed_at == kNever ? 1 : 0;

@@ -94,11 +94,22 @@ class ParallelThinning {
   void build(const std::vector<std::uint8_t>& in, const std::vector<std::int64_t>& key);
   /// `in` has already changed at in_changes (with their old values); key_changes lists the cells
   /// whose key changed. Returns the output cells that changed (with their old values).
+  /// fixed_point (optional): a superset F of `in` in which no cell is removable (the output of
+  /// a thinning with the same keys, of which `in` is a pruned subset). A cell can then only be
+  /// removed when a cell of F in its 3x3 neighbourhood is dead (not in `in`, or removed
+  /// before), so the changes farther than 2 cells from every such cell, in the stored run and
+  /// in the new one, cannot change any decision: they are not replayed (the re-thinning after a
+  /// pruning round then costs what the pruning changed, not what the first thinning changed).
   std::vector<Delta> update(const std::vector<std::uint8_t>& in,
                             const std::vector<Delta>& in_changes,
                             const std::vector<std::int64_t>& key,
-                            const std::vector<std::size_t>& key_changes, std::size_t* work);
+                            const std::vector<std::size_t>& key_changes, std::size_t* work,
+                            const std::vector<std::uint8_t>* fixed_point = nullptr);
   [[nodiscard]] const std::vector<std::uint8_t>& out() const { return out_; }
+  /// Of the last update with a fixed point: the changes and key changes that started dormant,
+  /// and those of them that a removal nearby woke up (replayed after all).
+  [[nodiscard]] std::size_t last_dormant() const { return last_dormant_; }
+  [[nodiscard]] std::size_t last_woken() const { return last_woken_; }
   /// Steps of the stored run (>= 1 + its last removal step).
   [[nodiscard]] int steps() const { return steps_; }
 
@@ -121,15 +132,20 @@ class ParallelThinning {
   const std::vector<std::int64_t>* key_ = nullptr;  // set for the duration of build/update
   std::vector<std::uint8_t> out_;
   int steps_ = 0;  // >= 1 + the last step that removed a cell
+  std::size_t last_dormant_ = 0, last_woken_ = 0;
   // Per cell, side by side so that a replay, which visits scattered cells, reads one cache line
   // per cell instead of three: the step of the stored run that removed it (kNever - step; 0 =
   // kept), its record in the current update (index + 1; 0 = none) and the scratch mark of the
   // current step (epoch; 0 = never). All zero at the start: the array is allocated zeroed.
+  // rec also holds two flags of update(): a dormant change and a dormant key change.
   struct CellState {
     std::int32_t removed;
     std::uint32_t rec;
     std::uint32_t seen;
   };
+  static constexpr std::uint32_t kRecIndex = 0x3fffffffU;
+  static constexpr std::uint32_t kDormantChange = 0x80000000U;
+  static constexpr std::uint32_t kDormantKey = 0x40000000U;
   ZeroedArray<CellState> cells_;
   // Scratch for update().
   struct Rec {
@@ -141,6 +157,7 @@ class ParallelThinning {
   };
   std::vector<Rec> recs_, perm_;
   std::vector<std::uint32_t> active_;
+  std::vector<std::uint8_t> relevant_;
   std::vector<std::size_t> cand_;
   // The candidates of each subfield at its latest step t0, reusable four steps later while no
   // removal step changed, no record's difference flips (valid_until) and no key-changed cell
