@@ -288,13 +288,7 @@ void DynamicGvd::row_lower(int y, int xa, int xb, const std::vector<int>& cols,
                            std::vector<std::size_t>* changed) {
   // Only lowered columns changed in this row: their old sites still exist, so the new nearest
   // site of a cell is the lexicographic minimum of its old one and the changed columns' sites.
-  struct Col {
-    std::int64_t d;   // squared vertical distance of the column's site
-    int x;            // column
-    std::int32_t sy;  // row of its site
-    std::int32_t s;   // padded index of its site
-  };
-  static thread_local std::vector<Col> cs;
+  std::vector<LowerCol>& cs = lower_cols_;
   cs.clear();
   for (const int xc : cols) {
     const std::size_t ci = pidx(xc, y);
@@ -305,7 +299,7 @@ void DynamicGvd::row_lower(int y, int xa, int xb, const std::vector<int>& cols,
     const std::size_t i = pidx(x, y);
     std::int64_t bd = d2_[i];
     std::int32_t bs = site_[i];
-    for (const Col& c : cs) {
+    for (const LowerCol& c : cs) {
       const std::int64_t dd = std::int64_t{x - c.x} * (x - c.x) + c.d;
       bool better = bd < 0 || dd < bd;
       if (!better && dd == bd && c.s != bs) {  // ties: the lower column, then the lower row

@@ -224,6 +224,13 @@ class DynamicGvd {
   std::vector<std::uint8_t> mark_;        // scratch marks (0)
   std::vector<std::uint8_t> d2_changed_;  // scratch of update(): the distance changed (0)
   std::vector<std::int64_t> old_d2_;      // scratch of update(): d2 before it changed
+  struct LowerCol {                       // scratch of row_lower(): a changed column's site
+    std::int64_t d;                       // squared vertical distance of the site
+    int x;                                // column
+    std::int32_t sy;                      // row of the site
+    std::int32_t s;                       // padded index of the site
+  };
+  std::vector<LowerCol> lower_cols_;
   std::vector<std::uint8_t> raw_;
   std::vector<internal::ParallelThinning> thins_;  // thin, then (prune, thin) per round
   std::vector<internal::ParallelPruning> prunes_;
