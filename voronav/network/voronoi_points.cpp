@@ -5,6 +5,7 @@
 #include <limits>
 #include <numeric>
 #include <queue>
+#include <tuple>
 
 #include "voronav/core/error.hpp"
 #include "voronav/field/distance_transform.hpp"
@@ -286,20 +287,23 @@ class PointGrid {
 
 }  // namespace
 
-PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
-                                   std::span<const double> start_cost, double robot_radius_m,
-                                   const BoundedExtraEdges& extra) {
-  if (start_cost.size() != points.size())
-    throw Error("search_points", 0, "start_cost must have one entry per point");
+namespace {
+
+/// Which of two points of equal cost the search settles first: the one with the lower key. For
+/// the plain search the key is the point's index; for merged copies (see below) it is the index
+/// of the copy that the search over all points would settle first.
+struct TieKeys {
+  std::span<const std::size_t> at_start;  ///< while a point keeps its start cost
+  std::span<const std::size_t> reached;   ///< once a relaxation lowered it
+};
+
+/// The grid search itself (search_points_bucketed without the merging of duplicates); the
+/// caller has checked the input.
+PointSearch search_grid(std::span<const VoronoiPoint> points, std::span<const double> start_cost,
+                        double robot_radius_m, const BoundedExtraEdges& extra,
+                        const TieKeys& keys = {}, std::vector<std::int32_t>* tie_parent = nullptr) {
   const std::size_t n = points.size();
   const bool has_edge = static_cast<bool>(extra.edge);
-  bool finite = true;
-  for (const auto& p : points)
-    finite = finite && std::isfinite(p.position.x) && std::isfinite(p.position.y);
-  if (!finite || (has_edge && !(extra.max_distance_m < std::numeric_limits<double>::infinity())))
-    return search_points(points, start_cost, robot_radius_m, extra.edge);  // nothing to bound by
-  for (const auto& [i, j] : extra.unbounded_pairs)
-    if (i >= n || j >= n) throw Error("search_points", 0, "an unbounded pair names no point");
   // The largest (c - r): a point i continues no point farther than (c_i - r) + amax.
   double amax = 0.0;
   for (const auto& p : points)
@@ -329,20 +333,22 @@ PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
   s.parent.assign(n, -1);
   if (n == 0) return s;
   PointGrid grid(points, cell_side);
-  using Item = std::pair<double, std::size_t>;
+  const bool keyed = !keys.at_start.empty();
+  using Item = std::tuple<double, std::size_t, std::size_t>;  // cost, tie key, point
   std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
   for (std::size_t i = 0; i < n; ++i)
     if (std::isfinite(start_cost[i])) {
       s.cost[i] = start_cost[i];
-      open.push({start_cost[i], i});
+      open.push({start_cost[i], keyed ? keys.at_start[i] : i, i});
     }
+  if (tie_parent) tie_parent->assign(n, -1);
   std::vector<std::uint8_t> done(n, 0);
   std::vector<std::size_t> seen(n, n);  // the settled point that last compared j
   while (!open.empty()) {
     // Plain variables, not a structured binding: the lambda below captures them (C++20 allows
     // capturing bindings, clang before 16 does not).
-    const double c = open.top().first;
-    const std::size_t i = open.top().second;
+    const double c = std::get<0>(open.top());
+    const std::size_t i = std::get<2>(open.top());
     open.pop();
     if (done[i]) continue;
     done[i] = 1;
@@ -360,7 +366,11 @@ PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
       if (nc < s.cost[j]) {
         s.cost[j] = nc;
         s.parent[j] = static_cast<std::int32_t>(i);
-        open.push({nc, j});
+        open.push({nc, keyed ? keys.reached[j] : j, j});
+      } else if (tie_parent && nc == s.cost[j] && s.parent[j] < 0 && (*tie_parent)[j] < 0) {
+        // j keeps its start, but a copy that started higher is reached here at the same cost.
+        (*tie_parent)[j] = static_cast<std::int32_t>(i);
+        if (keyed) open.push({nc, keys.reached[j], j});
       }
     };
     const double ai = static_cast<double>(pi.clearance) - robot_radius_m;
@@ -374,6 +384,139 @@ PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
     for (std::size_t k = adj_begin[i]; k < adj_begin[i + 1]; ++k)
       relax(adj[k]);
   }
+  return s;
+}
+
+/// Points that are exact copies of each other (a Search merged from re-forwards carries the same
+/// point several times): same position and clearance, clearance > r (so each copy continues
+/// the others at distance 0), outside the extra-edge range and in no unbounded pair (so the
+/// caller's edge() cannot tell them apart). `group[i]` is the lowest index of i's copies.
+std::vector<std::size_t> copy_groups(std::span<const VoronoiPoint> points, double robot_radius_m,
+                                     const BoundedExtraEdges& extra, bool& any) {
+  const std::size_t n = points.size();
+  std::vector<std::uint8_t> fixed(n, 0);
+  for (const auto& [i, j] : extra.unbounded_pairs) {
+    fixed[i] = 1;
+    fixed[j] = 1;
+  }
+  std::vector<std::size_t> order;
+  order.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool in_range = extra.edge && i >= extra.range_begin && i < extra.range_end;
+    if (!fixed[i] && !in_range && static_cast<double>(points[i].clearance) - robot_radius_m > 0.0)
+      order.push_back(i);
+  }
+  auto key_less = [&](std::size_t a, std::size_t b) {
+    const auto &p = points[a], &q = points[b];
+    if (p.position.x != q.position.x) return p.position.x < q.position.x;
+    if (p.position.y != q.position.y) return p.position.y < q.position.y;
+    if (p.clearance != q.clearance) return p.clearance < q.clearance;
+    return a < b;
+  };
+  std::sort(order.begin(), order.end(), key_less);
+  std::vector<std::size_t> group(n);
+  std::iota(group.begin(), group.end(), std::size_t{0});
+  any = false;
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const auto &p = points[order[k - 1]], &q = points[order[k]];
+    if (p.position.x == q.position.x && p.position.y == q.position.y &&
+        p.clearance == q.clearance) {
+      group[order[k]] = group[order[k - 1]];  // ascending indices: the first is the lowest
+      any = true;
+    }
+  }
+  return group;
+}
+
+}  // namespace
+
+PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
+                                   std::span<const double> start_cost, double robot_radius_m,
+                                   const BoundedExtraEdges& extra) {
+  if (start_cost.size() != points.size())
+    throw Error("search_points", 0, "start_cost must have one entry per point");
+  const std::size_t n = points.size();
+  const bool has_edge = static_cast<bool>(extra.edge);
+  bool finite = true;
+  for (const auto& p : points)
+    finite = finite && std::isfinite(p.position.x) && std::isfinite(p.position.y);
+  if (!finite || (has_edge && !(extra.max_distance_m < std::numeric_limits<double>::infinity())))
+    return search_points(points, start_cost, robot_radius_m, extra.edge);  // nothing to bound by
+  for (const auto& [i, j] : extra.unbounded_pairs)
+    if (i >= n || j >= n) throw Error("search_points", 0, "an unbounded pair names no point");
+  bool any_copy = false;
+  const auto group = copy_groups(points, robot_radius_m, extra, any_copy);
+  if (!any_copy) return search_grid(points, start_cost, robot_radius_m, extra);
+  // Search one point per group of copies (its cheapest start), then give every copy the result
+  // the search over all points gives it. In that search the copies of a group all receive the
+  // same relaxations from other points (same position and clearance); the first copy settled,
+  // F, relaxes the others at distance 0, and every later point reached through the group gets F
+  // as its parent (the later copies offer the same cost, which is not lower). So:
+  //  - a group reached below its cheapest start m (from point k): every copy has that cost and
+  //    parent k; F is the lowest index;
+  //  - otherwise F is the lowest index whose start is m; every copy costs m, the copies whose
+  //    start is m keep parent -1, the others get parent F.
+  // (Exact floating-point ties between a relaxation and m are the one case this does not cover.)
+  std::vector<std::size_t> compact_of(n), full_of;                    // point <-> compact index
+  std::vector<double> m(n, std::numeric_limits<double>::infinity());  // per group leader
+  for (std::size_t i = 0; i < n; ++i)
+    m[group[i]] = std::min(m[group[i]], start_cost[i]);
+  std::vector<VoronoiPoint> cpoints;
+  std::vector<double> cstart;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (group[i] != i) {
+      compact_of[i] = compact_of[group[i]];
+      continue;
+    }
+    compact_of[i] = full_of.size();
+    full_of.push_back(i);
+    cpoints.push_back(points[i]);
+    cstart.push_back(m[i]);
+  }
+  BoundedExtraEdges cextra;
+  cextra.max_distance_m = extra.max_distance_m;
+  if (has_edge) {
+    // Points in the edge range are never merged, so the range stays contiguous.
+    cextra.edge = [&](std::size_t a, std::size_t b) { return extra.edge(full_of[a], full_of[b]); };
+    cextra.range_begin = static_cast<std::size_t>(
+        std::lower_bound(full_of.begin(), full_of.end(), extra.range_begin) - full_of.begin());
+    cextra.range_end = static_cast<std::size_t>(
+        std::lower_bound(full_of.begin(), full_of.end(), extra.range_end) - full_of.begin());
+  }
+  for (const auto& [i, j] : extra.unbounded_pairs)
+    cextra.unbounded_pairs.emplace_back(compact_of[i], compact_of[j]);
+  // F of every group while it keeps its start (the lowest index whose start is m) and once it
+  // is reached below m (the lowest index): equal costs are settled in the order of these keys,
+  // as the search over all points settles them in the order of their indices.
+  std::vector<std::size_t> first_at_start(full_of.begin(), full_of.end());
+  for (std::size_t i = n; i-- > 0;) {
+    const std::size_t c = compact_of[i];
+    if (start_cost[i] == cstart[c]) first_at_start[c] = i;  // ends at the lowest
+  }
+  std::vector<std::int32_t> tie;  // (see search_grid) the group's copies that started above m
+  const PointSearch cs =
+      search_grid(cpoints, cstart, robot_radius_m, cextra, TieKeys{first_at_start, full_of}, &tie);
+  std::vector<std::size_t> first(full_of.size());
+  for (std::size_t c = 0; c < full_of.size(); ++c)
+    first[c] = cs.parent[c] < 0 && tie[c] < 0 ? first_at_start[c] : full_of[c];
+  PointSearch s;
+  s.cost.assign(n, std::numeric_limits<double>::infinity());
+  s.parent.assign(n, -1);
+  s.candidates = cs.candidates;
+  std::size_t reached = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t c = compact_of[i];
+    s.cost[i] = cs.cost[c];
+    if (!std::isfinite(cs.cost[c])) continue;
+    ++reached;
+    if (cs.parent[c] >= 0) {
+      s.parent[i] = static_cast<std::int32_t>(first[static_cast<std::size_t>(cs.parent[c])]);
+    } else if (start_cost[i] != cstart[c]) {
+      s.parent[i] = static_cast<std::int32_t>(tie[c] >= 0 ? first[static_cast<std::size_t>(tie[c])]
+                                                          : first[c]);
+    }
+  }
+  s.work = reached * n;  // the all-pairs search settles every reached point and examines n pairs
   return s;
 }
 

@@ -29,6 +29,7 @@
 #include "voronav/network/transport.hpp"
 #include "voronav/network/voronoi_points.hpp"
 #include "voronav/sim/netsim.hpp"
+#include "voronav/sim/segment_cache.hpp"
 #include "voronav/sim/world.hpp"
 
 namespace voronav::sim {
@@ -130,6 +131,7 @@ class RobotAgent {
     network::PointSearch s_search;
     std::size_t s_na = 0;             // number of sender points in s_comb
     std::vector<std::size_t> s_sent;  // sent point index -> s_comb index
+    SegmentCache own_moves;           // try_continue's own-edge checks, until the map changes
     Walk walk = Walk::kIdle;
     double walk_since_check = 0.0;
     double bridge_at = -1.0;  // when to start bridging if no continuable Search came

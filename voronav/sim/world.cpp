@@ -44,6 +44,7 @@ void LocalMap::ensure(Cell lo, Cell hi) {
 void LocalMap::set(Cell w, std::int8_t v) {
   ensure(w, w);
   grid_[w - offset_] = v;
+  ++version_;
 }
 
 std::size_t LocalMap::known_cells() const {
