@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <queue>
@@ -205,11 +206,13 @@ PointSearch search_points(std::span<const VoronoiPoint> points, std::span<const 
 
 namespace {
 
+constexpr double kHuge = 1e300;  // "no limit" for a reach in PointGrid::for_each_near
+
 /// Points bucketed by position into square cells of side h (counting sort); settled points are
 /// taken out, so the order within a cell changes (the search's result does not depend on it).
 class PointGrid {
  public:
-  PointGrid(std::span<const VoronoiPoint> points, double h) {
+  PointGrid(std::span<const VoronoiPoint> points, double h, double robot_radius) {
     double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
     x0_ = std::numeric_limits<double>::infinity();
     y0_ = x0_;
@@ -242,6 +245,10 @@ class PointGrid {
     end_.assign(begin_.begin(), begin_.end() - 1);
     for (std::size_t i = 0; i < points.size(); ++i)
       order_[end_[cell_[i]]++] = i;
+    reach_.assign(begin_.size() - 1, -std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < points.size(); ++i)
+      reach_[cell_[i]] =
+          std::max(reach_[cell_[i]], static_cast<double>(points[i].clearance) - robot_radius);
   }
   /// Takes point i out of its cell (a settled point is never compared again).
   void remove(std::size_t i) {
@@ -252,17 +259,27 @@ class PointGrid {
         return;
       }
   }
-  /// Calls f(j) for every point j in the cells that overlap the square [p - R, p + R].
+  /// Calls f(j) for every point j in the cells that overlap the square [p - R, p + R] and whose
+  /// rectangle is within `reach` plus the cell's largest (c - r) of p, or within `always` of p
+  /// (`margin` is added to both, for rounding).
   template <typename F>
-  void for_each_near(Vec2 p, double radius, F&& f) const {
+  void for_each_near(Vec2 p, double radius, double reach, double always, double margin,
+                     F&& f) const {
     const int xa = cx(p.x - radius), xb = cx(p.x + radius);
     const int ya = cy(p.y - radius), yb = cy(p.y + radius);
-    for (int y = ya; y <= yb; ++y)
+    for (int y = ya; y <= yb; ++y) {
+      const double ylo = y0_ + h_ * y, dy = std::max({0.0, ylo - p.y, p.y - (ylo + h_)});
       for (int x = xa; x <= xb; ++x) {
         const std::size_t c = index(x, y);
+        if (begin_[c] == end_[c]) continue;
+        const double xlo = x0_ + h_ * x, dx = std::max({0.0, xlo - p.x, p.x - (xlo + h_)});
+        const double d2 = dx * dx + dy * dy;
+        const double lim = std::max(reach + reach_[c], always) + margin;
+        if (lim < 0.0 || d2 > lim * lim) continue;
         for (std::size_t k = begin_[c]; k < end_[c]; ++k)
           f(order_[k]);
       }
+    }
   }
 
  private:
@@ -283,6 +300,7 @@ class PointGrid {
   std::vector<std::size_t> end_;    // one past the last point still in each cell
   std::vector<std::size_t> cell_;   // cell of each point
   std::vector<std::size_t> order_;
+  std::vector<double> reach_;  // per cell: the largest (c - r) of its points
 };
 
 }  // namespace
@@ -311,7 +329,9 @@ PointSearch search_grid(std::span<const VoronoiPoint> points, std::span<const do
   const double emax = has_edge ? std::max(0.0, extra.max_distance_m) : 0.0;
   // Cells of side amax: a point looks (c - r) + amax <= 2 amax around it for continuing points
   // (5 x 5 cells); a point in the edge range also emax around it.
-  const double cell_side = amax > 0.0 ? amax : std::max(emax, 1.0);
+  // (Cells no wider than 1 m: each cell's largest (c - r) then prunes well where narrow
+  // corridors and wide rooms mix.)
+  const double cell_side = amax > 0.0 ? std::min(amax, 1.0) : std::max(emax, 1.0);
   // Adjacency of the unbounded pairs (CSR).
   std::vector<std::size_t> adj_begin(n + 1, 0), adj;
   if (has_edge && !extra.unbounded_pairs.empty()) {
@@ -332,7 +352,7 @@ PointSearch search_grid(std::span<const VoronoiPoint> points, std::span<const do
   s.cost.assign(n, std::numeric_limits<double>::infinity());
   s.parent.assign(n, -1);
   if (n == 0) return s;
-  PointGrid grid(points, cell_side);
+  PointGrid grid(points, cell_side, robot_radius_m);
   const bool keyed = !keys.at_start.empty();
   using Item = std::tuple<double, std::size_t, std::size_t>;  // cost, tie key, point
   std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
@@ -355,12 +375,14 @@ PointSearch search_grid(std::span<const VoronoiPoint> points, std::span<const do
     grid.remove(i);
     s.work += n;  // what the all-pairs search examines for this settled point
     const VoronoiPoint& pi = points[i];
-    auto relax = [&](std::size_t j) {
+    const bool in_range = has_edge && i >= extra.range_begin && i < extra.range_end;
+    // may_edge: edge() can join i and j (an unbounded pair, or both in the edge range).
+    auto relax = [&](std::size_t j, bool may_edge) {
       if (seen[j] == i) return;
       seen[j] = i;
       ++s.candidates;
       if (done[j]) return;
-      if (!continues_inline(pi, points[j], robot_radius_m) && !(has_edge && extra.edge(i, j)))
+      if (!continues_inline(pi, points[j], robot_radius_m) && !(may_edge && extra.edge(i, j)))
         return;
       const double nc = c + distance(pi.position, points[j].position);
       if (nc < s.cost[j]) {
@@ -373,16 +395,21 @@ PointSearch search_grid(std::span<const VoronoiPoint> points, std::span<const do
         if (keyed) open.push({nc, keys.reached[j], j});
       }
     };
+    // Unbounded pairs first: a pair the grid visits is not compared again (seen).
+    for (std::size_t k = adj_begin[i]; k < adj_begin[i + 1]; ++k)
+      relax(adj[k], true);
     const double ai = static_cast<double>(pi.clearance) - robot_radius_m;
-    const bool in_range = has_edge && i >= extra.range_begin && i < extra.range_end;
     double radius = std::max(ai > 0.0 ? ai + amax : 0.0, in_range ? emax : 0.0);
     if (ai > 0.0 || in_range) {  // (an edge bound of 0 still joins points at one place)
       // A margin for rounding: the exact tests decide, the grid only has to include.
-      radius += 1e-6 * (1.0 + radius + std::abs(pi.position.x) + std::abs(pi.position.y));
-      grid.for_each_near(pi.position, radius, relax);
+      const double margin =
+          1e-6 * (1.0 + radius + std::abs(pi.position.x) + std::abs(pi.position.y));
+      // A cell can hold a point that continues i only within (c_i - r) + its largest (c - r).
+      grid.for_each_near(pi.position, radius + margin, ai > 0.0 ? ai : -kHuge,
+                         in_range ? emax : -kHuge, margin, [&](std::size_t j) {
+                           relax(j, in_range && j >= extra.range_begin && j < extra.range_end);
+                         });
     }
-    for (std::size_t k = adj_begin[i]; k < adj_begin[i + 1]; ++k)
-      relax(adj[k]);
   }
   return s;
 }
@@ -399,30 +426,40 @@ std::vector<std::size_t> copy_groups(std::span<const VoronoiPoint> points, doubl
     fixed[i] = 1;
     fixed[j] = 1;
   }
-  std::vector<std::size_t> order;
-  order.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool in_range = extra.edge && i >= extra.range_begin && i < extra.range_end;
-    if (!fixed[i] && !in_range && static_cast<double>(points[i].clearance) - robot_radius_m > 0.0)
-      order.push_back(i);
-  }
-  auto key_less = [&](std::size_t a, std::size_t b) {
-    const auto &p = points[a], &q = points[b];
-    if (p.position.x != q.position.x) return p.position.x < q.position.x;
-    if (p.position.y != q.position.y) return p.position.y < q.position.y;
-    if (p.clearance != q.clearance) return p.clearance < q.clearance;
-    return a < b;
+  // Open addressing on (x, y, clearance), in index order: the first point of a key is the
+  // lowest index of its copies.
+  std::size_t cap = 16;
+  while (cap < 2 * n)
+    cap *= 2;
+  std::vector<std::size_t> table(cap, n);  // n = empty slot
+  auto bits = [](double d) {
+    std::uint64_t u = 0;
+    std::memcpy(&u, &d, sizeof u);
+    return u;
   };
-  std::sort(order.begin(), order.end(), key_less);
   std::vector<std::size_t> group(n);
   std::iota(group.begin(), group.end(), std::size_t{0});
   any = false;
-  for (std::size_t k = 1; k < order.size(); ++k) {
-    const auto &p = points[order[k - 1]], &q = points[order[k]];
-    if (p.position.x == q.position.x && p.position.y == q.position.y &&
-        p.clearance == q.clearance) {
-      group[order[k]] = group[order[k - 1]];  // ascending indices: the first is the lowest
-      any = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool in_range = extra.edge && i >= extra.range_begin && i < extra.range_end;
+    const auto& p = points[i];
+    if (fixed[i] || in_range || !(static_cast<double>(p.clearance) - robot_radius_m > 0.0))
+      continue;
+    std::uint64_t h = bits(p.position.x) * 0x9e3779b97f4a7c15ull;
+    h = (h ^ (h >> 29) ^ bits(p.position.y)) * 0xbf58476d1ce4e5b9ull;
+    h = (h ^ (h >> 31) ^ bits(static_cast<double>(p.clearance))) * 0x94d049bb133111ebull;
+    for (std::size_t k = (h ^ (h >> 32)) & (cap - 1);; k = (k + 1) & (cap - 1)) {
+      if (table[k] == n) {
+        table[k] = i;
+        break;
+      }
+      const auto& q = points[table[k]];
+      if (q.position.x == p.position.x && q.position.y == p.position.y &&
+          q.clearance == p.clearance) {
+        group[i] = table[k];
+        any = true;
+        break;
+      }
     }
   }
   return group;
