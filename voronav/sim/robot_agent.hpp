@@ -97,7 +97,8 @@ class RobotAgent {
   [[nodiscard]] double first_route_s() const { return report_.route_time_s; }
   [[nodiscard]] AgentReport report() const;
   [[nodiscard]] const LocalMap& local_map() const { return r_.map; }
-  [[nodiscard]] std::vector<network::VoronoiPoint> open_points();
+  /// The robot's open points now (for observers: adds nothing to its work).
+  [[nodiscard]] std::vector<network::VoronoiPoint> open_points() const;
   /// The source's current route [m] (decentralized: route points; centralized: waypoints).
   [[nodiscard]] std::vector<Vec2> route() const;
 
