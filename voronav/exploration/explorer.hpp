@@ -51,6 +51,15 @@ enum class TreeReplan { kNone, kFromRobots };
 /// "none" / "robots"; throws voronav::Error naming the accepted values.
 [[nodiscard]] TreeReplan parse_tree_replan(std::string_view name);
 
+/// What a robot blocked for 3 s on a tree leg does: kNone = skips the waypoint it cannot reach
+/// and searches reactively for 5 s (before issue 14's willow trace); kAroundRobots = re-plans the
+/// rest of the leg to the same leaf with the other robots within 3 m blocked, as the frontier
+/// methods plan (ours; the paper's robots are never blocked by each other in its figures).
+enum class TreeLegReplan { kNone, kAroundRobots };
+[[nodiscard]] std::string_view to_string(TreeLegReplan r);
+/// "none" / "robots"; throws voronav::Error naming the accepted values.
+[[nodiscard]] TreeLegReplan parse_tree_leg_replan(std::string_view name);
+
 struct ExplorationOptions {
   ExplorationMethod method = ExplorationMethod::kTree;
   int robots = 4;                  ///< team size (1..64)
@@ -64,7 +73,8 @@ struct ExplorationOptions {
   int map_beam_stride = 2;         ///< every k-th beam is used for mapping
   double record_period = 1.0;      ///< a frame is recorded this often [s]
   double tree_start_time = 400.0;  ///< [s] reactive search before the first tree (seed 004)
-  TreeReplan tree_replan = TreeReplan::kNone;  ///< kTree only (see TreeReplan)
+  TreeReplan tree_replan = TreeReplan::kNone;                    ///< kTree only (see TreeReplan)
+  TreeLegReplan tree_leg_replan = TreeLegReplan::kAroundRobots;  ///< kTree (see TreeLegReplan)
   /// [s] kTreeFrontier: its first tree (feature points are collected from the start).
   double hybrid_tree_start_time = 10.0;
   double hybrid_tree_period = 10.0;  ///< [s] kTreeFrontier: the tree is rebuilt this often
@@ -157,6 +167,8 @@ struct ExplorationResult {
   int stalled_robots = 0;
   /// Goals given up by the progress watchdog (no progress for stall_time / 3).
   int watchdog_events = 0;
+  int leg_replans = 0;  ///< tree legs re-planned around robots (TreeLegReplan::kAroundRobots)
+  int escapes = 0;      ///< corridor escapes of the reactive controllers (AvoidEscape::kCorridor)
   std::size_t reachable_free_cells = 0;
   ExplorationRecording recording;
 };
