@@ -24,7 +24,8 @@ struct Agent {
   Agent(const ExplorationOptions& o, Pose2 start, std::uint64_t seed, const GridGeometry& g)
       : body(o.drive, start, seed),
         controller([&] {
-          robot::ReactiveControllerOptions c = o.controller;
+          robot::ReactiveControllerOptions c =
+              o.method == ExplorationMethod::kTree ? o.controller : o.frontier_controller;
           c.seed = seed;
           return c;
         }()),
@@ -220,6 +221,7 @@ void ExplorationOptions::validate() const {
   drive.validate();
   laser.validate();
   controller.validate();
+  frontier_controller.validate();
   features.validate();
   tree.validate();
   frontier.validate();
@@ -887,6 +889,8 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
                 if (distance(agents[j]->body.true_pose().position, pose.position) <
                     2.0 * body + 0.3)
                   a.back_off_until = t + 2.0;
+          } else if (!a.on_tree) {
+            a.blocked_time = 0.0;  // frontier goals: as before issue 14's tree trace (below)
           }
           if (t < a.back_off_until) cmd = {-0.1, 0.0};
           a.since_progress += o.dt;

@@ -60,6 +60,20 @@ enum class TreeLegReplan { kNone, kAroundRobots };
 /// "none" / "robots"; throws voronav::Error naming the accepted values.
 [[nodiscard]] TreeLegReplan parse_tree_leg_replan(std::string_view name);
 
+/// Controller options of kTree's reactive search and of the frontier methods' reactive windows.
+[[nodiscard]] inline robot::ReactiveControllerOptions tree_search_controller() {
+  robot::ReactiveControllerOptions c;
+  c.random_turn_rate = 0.0;
+  c.avoid_escape = robot::AvoidEscape::kCorridor;
+  return c;
+}
+[[nodiscard]] inline robot::ReactiveControllerOptions frontier_window_controller() {
+  robot::ReactiveControllerOptions c;
+  c.random_turn_rate = 0.4;
+  c.avoid_escape = robot::AvoidEscape::kSpin;
+  return c;
+}
+
 struct ExplorationOptions {
   ExplorationMethod method = ExplorationMethod::kTree;
   int robots = 4;                  ///< team size (1..64)
@@ -94,7 +108,14 @@ struct ExplorationOptions {
   double min_cell_size = 0.1;
   robot::DiffDriveOptions drive;
   robot::LaserOptions laser;
-  robot::ReactiveControllerOptions controller;
+  /// kTree's reactive search (seed 004, section 3.2): straight ahead while the front is clear
+  /// (Table 1: CLEAR -> F; random_turn_rate 0) and the corridor escape of rule 2 (issue 14).
+  robot::ReactiveControllerOptions controller = tree_search_controller();
+  /// The reactive windows of the frontier methods (kFrontier, kCoordinated, kTreeFrontier): the
+  /// controller as before issue 14's tree work (random turns of up to 0.4 rad/s, rule 2 spins),
+  /// which their measured stall fixes rely on (willow, 16 robots, seed 1, frontier: 59.6 %,
+  /// 0 stalled; with the corridor escape 65.9 %, 1 stalled).
+  robot::ReactiveControllerOptions frontier_controller = frontier_window_controller();
   FeaturePointOptions features;
   VoronoiTreeOptions tree;
   FrontierOptions frontier;
