@@ -215,6 +215,8 @@ CASES = [
     ("netsim_write_scenario_root_file", {},
      ["netsim", "--scenario", "1", "--write-scenario", "/voronav_hostile_test.yaml"], 2,
      ["--write-scenario", "filesystem root"], []),
+    ("demo_out_in_proc", {}, ["demo", "--out", "/proc/voronav_hostile_test"], 2,
+     ["--out", "cannot create the output folder '/proc/voronav_hostile_test'"], ["filesystem error"]),
     ("replay_example_out_root", {}, ["replay", "--example", "--out", "/"], 2,
      ["--out", "filesystem root"], []),
 ]

@@ -291,6 +291,14 @@ void print_json(const nlohmann::json& j) {
   std::cout << j.dump(2) << "\n";
 }
 
+void make_output_dir(const std::filesystem::path& dir, const std::string& option) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec)
+    throw Error(option, 0,
+                "cannot create the output folder '" + dir.string() + "': " + ec.message());
+}
+
 std::filesystem::path bundled_data_dir() {
   namespace fs = std::filesystem;
   for (const fs::path& p : {fs::path(VORONAV_SOURCE_DIR) / "data", fs::path("data")})

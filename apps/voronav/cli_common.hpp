@@ -77,6 +77,10 @@ struct MapContext {
 /// Prints JSON (pretty, 2 spaces) to stdout.
 void print_json(const nlohmann::json& j);
 
+/// Creates the output folder `dir` (and its parents) given by `option`; a folder that cannot be
+/// created is a voronav::Error naming the option, the folder and the system's reason.
+void make_output_dir(const std::filesystem::path& dir, const std::string& option);
+
 /// The folder of bundled data (data/ in the source tree), or empty when not found.
 [[nodiscard]] std::filesystem::path bundled_data_dir();
 

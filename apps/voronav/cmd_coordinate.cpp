@@ -280,7 +280,7 @@ void run_sipp(const CoordArgs& a, const co::Scenario& sc, const std::vector<co::
       {"at_goal", co::to_string(mo.at_goal)},
       {"agents", js_agents}};
   if (!a.out.empty() && ok) {
-    std::filesystem::create_directories(a.out);
+    make_output_dir(a.out, "--out");
     co::Schedule s{agents, {}, mo.at_start, mo.at_goal, r.valid, r.plan.plans, {}};
     for (const auto& w : r.plan.plans)
       s.delays.push_back(w.front().t);
@@ -399,7 +399,7 @@ void run(const CoordArgs& a) {
       {"frame_id", "map"},
       {"units", {{"time", "s"}, {"length", "m"}}}};
   if (!a.out.empty()) {
-    std::filesystem::create_directories(a.out);
+    make_output_dir(a.out, "--out");
     write_schedules(
         sc, co::Schedule{agents, r.delays, opt.map.at_start, opt.map.at_goal, r.valid, {}, {}},
         a.out);

@@ -518,7 +518,7 @@ void run(const DemoArgs& a) {
   if (d.data.empty() || !fs::exists(d.data / "README.md"))
     throw Error("--data", 0, "bundled data folder not found; pass --data <repo>/data");
   if (a.robots < 1 || a.robots > 20) throw Error("--robots", 0, "expected 1..20 robots");
-  fs::create_directories(a.out);
+  make_output_dir(a.out, "--out");
   const auto t0 = Clock::now();
   Progress progress(7, !a.json && !a.quiet);
   progress.begin("occupancy map from a simulated laser sweep");

@@ -64,7 +64,7 @@ struct Plan {
 /// Figures 22-37 style: one value per run of Table 7, both methods side by side.
 void save_plots(const std::string& dir, const std::string& label, const std::string& title,
                 const std::map<std::string, std::vector<sim::NetSimMetrics>>& runs) {
-  std::filesystem::create_directories(dir);
+  make_output_dir(dir, "--plots");
   struct Fig {
     const char* file;
     const char* title;
@@ -172,7 +172,8 @@ Plan make_plan(const NetsimArgs& a) {
     p.methods = methods_of(a.method);
     return p;
   }
-  if (!std::filesystem::is_regular_file(a.scenario))
+  std::error_code exists_error;  // a name the file system refuses is "not found", not an exception
+  if (!std::filesystem::is_regular_file(a.scenario, exists_error))
     throw Error(a.scenario, 0,
                 "scenario file not found (--scenario expects 1, 2, 3, 4 or a scenario YAML file)");
   auto file = std::make_shared<sim::NetSimScenarioFile>(sim::load_netsim_scenario(a.scenario));
@@ -243,7 +244,7 @@ dds::DdsRunResult run_dds(const NetsimArgs& a, const sim::NetSimScenario& sc,
   namespace fs = std::filesystem;
   const fs::path dir =
       fs::temp_directory_path() / ("voronav-netsim-dds-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  make_output_dir(dir, "the DDS run folder");
   struct Cleanup {
     fs::path d;
     ~Cleanup() {
@@ -469,7 +470,7 @@ void run(const NetsimArgs& a) {
     return netsim_recording(sc, sim::run_netsim(sc, o), o.radio.range_m);
   };
   if (!a.out.empty()) {
-    std::filesystem::create_directories(a.out);
+    make_output_dir(a.out, "--out");
     std::ofstream f(std::filesystem::path(a.out) / ("netsim_" + plan.label + ".json"));
     if (!f) throw Error(a.out, 0, "cannot write the results");
     f << nlohmann::json{{"frame_id", "map"}, {"summary", out}, {"runs", per_run}}.dump(2) << "\n";

@@ -52,7 +52,11 @@ void run(const ReplayArgs& a) {
     report::save_recording(rec, recording_file.string());
   }
   const std::string page = report::write_replay_html(rec, (a.out / "index.html").string());
-  const auto bytes = fs::file_size(page);
+  std::error_code size_error;
+  const auto bytes = fs::file_size(page, size_error);
+  if (size_error)
+    throw Error(page, 0,
+                "the replay page was written but cannot be read back: " + size_error.message());
   if (a.json) {
     print_json({{"index_html", fs::absolute(page).string()},
                 {"recording", fs::absolute(recording_file).string()},

@@ -29,6 +29,11 @@ struct TopoArgs {
   std::string metric = "ipa";
   int free_from = 250;
   double min_region_area = 1.0;
+  double max_rise_walk = topology::TopologyOptions{}.max_rise_walk;
+  double passage_length = topology::TopologyOptions{}.passage_length;
+  double passage_rise_ratio = topology::TopologyOptions{}.passage_rise_ratio;
+  bool validate_sides = topology::TopologyOptions{}.validate_sides;
+  double min_wall_area = topology::TopologyOptions{}.min_wall_area;
   bool json = false;
   std::filesystem::path mcap;
 };
@@ -51,6 +56,11 @@ void run(const TopoArgs& a) {
   opt.method = a.method == "ca" ? topology::DiagramMethod::kCellularAutomaton
                                 : topology::DiagramMethod::kEdt;
   opt.min_region_area = a.min_region_area;
+  opt.max_rise_walk = a.max_rise_walk;
+  opt.passage_length = a.passage_length;
+  opt.passage_rise_ratio = a.passage_rise_ratio;
+  opt.validate_sides = a.validate_sides;
+  opt.min_wall_area = a.min_wall_area;
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
   const topology::TopologicalMap m = topology::build_topological_map(blocked, opt);
@@ -192,6 +202,30 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--min-region-area", args->min_region_area,
                   "Regions smaller than this [m^2] are merged into a neighbour")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--max-rise-walk", args->max_rise_walk,
+                  "Critical points: the clearance rise is sought up to this far [m] along the "
+                  "diagram, across junctions (0 = only on the point's own edge)")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--passage-length", args->passage_length,
+                  "Critical points: a narrowing of near-constant clearance at least this long "
+                  "[m] (a corridor) is cut at its ends, also when only one end widens (0 = off)")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--passage-rise-ratio", args->passage_rise_ratio,
+                  "A passage end is cut only where the clearance beyond it reaches (1 + this) x "
+                  "the passage's")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--validate-sides", args->validate_sides,
+                  "Room test: drop a critical line when a region it separates is no wider than "
+                  "the line (true/false)")
+      ->capture_default_str();
+  cmd->add_option("--min-wall-area", args->min_wall_area,
+                  "Obstacle pieces smaller than this [m^2] are furniture: no critical line "
+                  "(door) ends on them (0 = off)")
       ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--mcap", args->mcap,

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+
+#include "cli_common.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/io/map_loader.hpp"
 #include "voronav/render/figure.hpp"
@@ -19,7 +21,7 @@ void save_stages(const OccupancyGrid& grid, const BinaryGrid& blocked,
                  const topology::TopologicalMap& m, bool border_blocked,
                  const std::filesystem::path& dir) {
   namespace fs = std::filesystem;
-  fs::create_directories(dir);
+  make_output_dir(dir, "--out");
   const render::CellBox crop = render::known_bounds(grid, 2);
   auto figure = [&](const std::string& title) {
     render::FigureOptions o;

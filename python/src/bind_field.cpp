@@ -240,6 +240,15 @@ void bind_field(py::module_& m) {
       .def_readwrite("rise_ratio", &topology::TopologyOptions::rise_ratio)
       .def_readwrite("max_door_width", &topology::TopologyOptions::max_door_width,
                      "[m], 0 = no limit")
+      .def_readwrite("max_rise_walk", &topology::TopologyOptions::max_rise_walk,
+                     "[m], 0 = the rise test stays on the point's own diagram edge")
+      .def_readwrite("passage_length", &topology::TopologyOptions::passage_length,
+                     "[m], 0 = off; a passage is cut at its ends where the clearance rises")
+      .def_readwrite("passage_rise_ratio", &topology::TopologyOptions::passage_rise_ratio)
+      .def_readwrite("min_wall_area", &topology::TopologyOptions::min_wall_area,
+                     "[m^2], 0 = off; no critical point on smaller obstacle pieces")
+      .def_readwrite("validate_sides", &topology::TopologyOptions::validate_sides,
+                     "room test of the critical lines")
       .def_readwrite("min_region_area", &topology::TopologyOptions::min_region_area, "[m^2]");
   py::class_<topology::CriticalPoint>(tp, "CriticalPoint")
       .def_property_readonly("cell",
@@ -351,7 +360,8 @@ void bind_field(py::module_& m) {
       },
       py::arg("regions"), py::arg("rooms"), py::arg("min_room_cells") = 0);
   tp.def("free_components", &topology::free_components, py::arg("blocked"),
-         py::arg("eight") = false, "Connected free areas (4- or 8-connected), labels 0.. (-1 blocked).");
+         py::arg("eight") = false,
+         "Connected free areas (4- or 8-connected), labels 0.. (-1 blocked).");
 }
 
 }  // namespace voronav::python

@@ -33,6 +33,21 @@ def test_floorplan_regions_equal_cli(data, cli):
     assert len(cp.line) > 0 and cp.clearance_m > 0
 
 
+def test_critical_line_options_equal_cli(data, cli):
+    # The passage and room-test options of seed 003's critical lines (docs/reproductions/topology.md)
+    # give the same regions from Python as from the CLI, and change the regions of this plan.
+    blocked = vn.binarize(office(data))
+    opts = vn.topology.TopologyOptions(passage_length=1.5, passage_rise_ratio=0.5, validate_sides=True)
+    assert opts.passage_length == 1.5 and opts.passage_rise_ratio == 0.5 and opts.validate_sides
+    topo = vn.topology.build_topological_map(blocked, opts)
+    out = cli("topo", "--map", str(data / "floorplans/office_a.png"), "--passage-length", "1.5",
+              "--passage-rise-ratio", "0.5", "--validate-sides", "true")
+    assert len(topo.regions) == out["regions"]
+    assert len(topo.critical_points) == len(out["critical_points"])
+    default = vn.topology.build_topological_map(blocked)
+    assert len(default.critical_points) != len(topo.critical_points)
+
+
 def test_topo_plan_status_returned(data):
     blocked = vn.binarize(office(data))
     topo = vn.topology.build_topological_map(blocked)

@@ -16,6 +16,11 @@ class TopologyOptions:
     min_rise: float  # [m]
     rise_ratio: float
     max_door_width: float  # [m]
+    max_rise_walk: float  # [m]
+    passage_length: float  # [m]
+    passage_rise_ratio: float
+    min_wall_area: float  # [m^2]
+    validate_sides: bool
     min_region_area: float  # [m^2]
     def __init__(self, **kwargs: object) -> None: ...
 

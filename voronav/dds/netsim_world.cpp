@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "voronav/core/error.hpp"
+#include "voronav/core/stepper.hpp"
 #include "voronav/dds/cyclone_config.hpp"
 #include "voronav/dds/dds_transport.hpp"
 #include "voronav/dds/internal/lockstep_control.hpp"
@@ -155,7 +156,9 @@ int run_world_process(const WorldProcessOptions& o) {
     trace.event({step * opts.dt_s, step, "world_resumed", -1,
                  "a new world process resumed the run after step " + std::to_string(step)});
   }
-  const int steps = static_cast<int>(std::ceil(opts.time_limit_s / opts.dt_s));
+  // As many steps as run_netsim's loop (core/stepper.hpp).
+  const auto steps = static_cast<int>(
+      step_count(opts.dt_s, opts.time_limit_s, "netsim.dt_s", "netsim.time_limit_s"));
   const auto source = static_cast<std::uint32_t>(sc.source);
   auto source_arrived = [&] { return last.count(source) && last[source].arrived; };
   while (static_cast<int>(step) < steps && alive[source] && !source_arrived()) {

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "voronav/core/error.hpp"
+#include "voronav/core/stepper.hpp"
 #include "voronav/field/distance_transform.hpp"
 #include "voronav/mapping/occupancy_map.hpp"
 #include "voronav/planning/bfs.hpp"
@@ -214,10 +215,8 @@ void ExplorationOptions::validate() const {
   if (map_beam_stride < 1) throw Error("ExplorationOptions.map_beam_stride", 0, "expected >= 1");
   if (start && !start->is_finite()) throw Error("--start", 0, "start must be finite");
   if (std::isnan(stop_at_coverage)) throw Error("ExplorationOptions.stop_at_coverage", 0, "NaN");
-  if (time_limit / dt > 1e9)
-    throw Error("ExplorationOptions.time_limit", 0,
-                "time_limit / dt is over 1e9 simulation steps, got " + std::to_string(time_limit) +
-                    " s / " + std::to_string(dt) + " s");
+  // At most 1e9 steps (the rule both simulators share, core/stepper.hpp).
+  (void)step_count(dt, time_limit, "ExplorationOptions.dt", "ExplorationOptions.time_limit");
   drive.validate();
   laser.validate();
   controller.validate();
@@ -367,11 +366,8 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   bool dispatched = false;  // the single dispatch of the first tree has happened
   double next_tree_time = tree_start;
   double next_replan = 0.0, next_check = 0.0, last_coverage = 0.0;
-  const auto steps_per = [&](double period) {
-    return std::max<long>(1, std::lround(period / o.dt));
-  };
-  const long map_every = steps_per(o.map_period), record_every = steps_per(o.record_period);
-  const long total_steps = std::lround(o.time_limit / o.dt);
+  // The clock, step count and periodic tasks (core/stepper.hpp, shared with sim/netsim).
+  const Stepper clock(o.dt, o.time_limit, "ExplorationOptions.dt", "ExplorationOptions.time_limit");
   result.recording.reveal_time.assign(blocked.size(), -1.0F);
 
   const auto coverage_now = [&] {
@@ -769,33 +765,32 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     }
   };
 
-  // --- the loop ---
+  // --- the loop: sense -> decide -> move (act) -> record, every step (core/stepper.hpp) ---
   std::vector<robot::Disc> others;
   for (auto& ap : agents)
     ap->anchor = ap->body.true_pose().position;
-  double t = 0.0;
-  for (long step = 0; step < total_steps; ++step) {
-    t = static_cast<double>(step) * o.dt;
-    // Sense and map.
-    if (step % map_every == 0) {
-      for (auto& ap : agents) {
-        Agent& a = *ap;
-        const robot::LaserScan scan =
-            robot::cast_scan(blocked, a.body.true_pose(), map_laser, {}, nullptr);
-        mapping::RangeScan rs;
-        rs.pose = scan.pose;
-        rs.bearings.resize(scan.ranges.size());
-        rs.ranges.resize(scan.ranges.size());
-        for (std::size_t k = 0; k < scan.ranges.size(); ++k) {
-          rs.bearings[k] = scan.angle(k);
-          rs.ranges[k] = scan.ranges[k];
-        }
-        a.map.insert_scan(rs, beam_model);
-        team.insert_scan(rs, beam_model);
-        if (tree_method) features.add(extract_feature_points(scan, o.features));
+  // Sense and map (every map_period).
+  const auto sense = [&](const Stepper::Step&) {
+    for (auto& ap : agents) {
+      Agent& a = *ap;
+      const robot::LaserScan scan =
+          robot::cast_scan(blocked, a.body.true_pose(), map_laser, {}, nullptr);
+      mapping::RangeScan rs;
+      rs.pose = scan.pose;
+      rs.bearings.resize(scan.ranges.size());
+      rs.ranges.resize(scan.ranges.size());
+      for (std::size_t k = 0; k < scan.ranges.size(); ++k) {
+        rs.bearings[k] = scan.angle(k);
+        rs.ranges[k] = scan.ranges[k];
       }
+      a.map.insert_scan(rs, beam_model);
+      team.insert_scan(rs, beam_model);
+      if (tree_method) features.add(extract_feature_points(scan, o.features));
     }
-    // Decide.
+  };
+  // Decide.
+  const auto decide = [&](const Stepper::Step& s) {
+    const double t = s.t;
     if (hybrid) {
       if (t >= next_tree_time) {
         rebuild_hybrid_tree(t);
@@ -825,7 +820,10 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       replan_frontiers();
       next_replan = t + o.replan_period;
     }
-    // Act.
+  };
+  // Act: every robot's command for this step, then its motion to the step's end.
+  const auto act = [&](const Stepper::Step& s) {
+    const double t = s.t;
     for (std::size_t i = 0; i < agents.size(); ++i) {
       Agent& a = *agents[i];
       others.clear();
@@ -965,28 +963,37 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         log_event(t, a, "stalled");
       }
     }
-    // Record.
-    if ((step + 1) % record_every == 0 || step + 1 == total_steps) {
-      ExplorationFrame f;
-      f.t = t + o.dt;
-      for (auto& ap : agents)
-        f.poses.push_back(ap->body.true_pose());
-      f.coverage = coverage_now();
-      last_coverage = f.coverage;
-      if (o.on_frame) o.on_frame(f.t, f.coverage);
-      {
-        const auto l = team.log_odds().data();
-        auto& rt = result.recording.reveal_time;
-        for (std::size_t k = 0; k < l.size(); ++k)
-          if (rt[k] < 0.0F && l[k] != 0.0F) rt[k] = static_cast<float>(f.t);
-      }
-      if (!result.t90_s && f.coverage >= 0.90) result.t90_s = f.t;
-      if (!result.t99_s && f.coverage >= 0.99) result.t99_s = f.t;
-      const bool stop = f.coverage >= o.stop_at_coverage;
-      result.recording.frames.push_back(std::move(f));
-      if (stop) break;
+  };
+  // Record (every record_period, and at the end): a frame at the step's end.
+  bool stop = false;  // stop_at_coverage reached
+  const auto record = [&](const Stepper::Step& s) {
+    ExplorationFrame f;
+    f.t = s.t_end;
+    for (auto& ap : agents)
+      f.poses.push_back(ap->body.true_pose());
+    f.coverage = coverage_now();
+    last_coverage = f.coverage;
+    if (o.on_frame) o.on_frame(f.t, f.coverage);
+    {
+      const auto l = team.log_odds().data();
+      auto& rt = result.recording.reveal_time;
+      for (std::size_t k = 0; k < l.size(); ++k)
+        if (rt[k] < 0.0F && l[k] != 0.0F) rt[k] = static_cast<float>(f.t);
     }
-  }
+    if (!result.t90_s && f.coverage >= 0.90) result.t90_s = f.t;
+    if (!result.t99_s && f.coverage >= 0.99) result.t99_s = f.t;
+    stop = f.coverage >= o.stop_at_coverage;
+    result.recording.frames.push_back(std::move(f));
+  };
+  Stepper::Phases phases;
+  phases.sense = sense;
+  phases.decide = decide;
+  phases.move = act;
+  phases.record = record;
+  phases.done = [&] { return stop; };
+  phases.sense_every = clock.every(o.map_period, "ExplorationOptions.map_period");
+  phases.record_every = clock.every(o.record_period, "ExplorationOptions.record_period");
+  clock.run(phases);
   // --- results ---
   result.sim_time_s = result.recording.frames.empty() ? 0.0 : result.recording.frames.back().t;
   result.coverage = coverage_now();

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "voronav/core/error.hpp"
+#include "voronav/core/stepper.hpp"
 #include "voronav/sim/robot_agent.hpp"
 #include "voronav/sim/world.hpp"
 
@@ -64,6 +65,8 @@ void NetSimOptions::validate() const {
   pos(link_timeout_s, "link_timeout_s");
   pos(collect_s, "collect_s");
   pos(repair_timeout_s, "repair_timeout_s");
+  // At most 1e9 steps (the rule both simulators share, core/stepper.hpp).
+  (void)step_count(dt_s, time_limit_s, "netsim.dt_s", "netsim.time_limit_s");
   if (!(robot_radius_m >= 0.0) || !std::isfinite(robot_radius_m))
     throw Error("netsim.robot_radius_m", 0, "expected a finite number >= 0");
   if (!(search_timeout_per_m >= 0.0) || !std::isfinite(search_timeout_per_m))
@@ -145,10 +148,6 @@ NetSimResult run_netsim(const NetSimScenario& scenario, const NetSimOptions& opt
                                                   scenario.robots[i], radio));
   RobotAgent& source = *agents[scenario.source];
   if (options.record) rec.world = scenario.world.geometry();
-  for (auto& a : agents)
-    a->begin();
-  for (auto& a : agents)
-    a->start();
   auto snapshot_at_route = [&] {
     if (!options.record || !rec.maps_at_route.empty() || source.first_route_s() < 0.0) return;
     for (auto& a : agents) {
@@ -156,20 +155,17 @@ NetSimResult run_netsim(const NetSimScenario& scenario, const NetSimOptions& opt
       rec.open_points_at_route.push_back(a->open_points());
     }
   };
-  snapshot_at_route();
-  // The step of RobotAgent (robot_agent.hpp); obstacle changes are due by the first route time
-  // known when the step starts (a robot process learns it from the world process then).
-  const int steps = static_cast<int>(std::ceil(options.time_limit_s / options.dt_s));
+  // The shared loop (core/stepper.hpp): sense -> decide -> move -> record each step. Step 0
+  // senses with begin() and starts the method at t = 0; RobotAgent::move() senses at the end of
+  // its move to t_{k+1} (the step a robot process runs, robot_agent.hpp), so that is the sensing
+  // at t_{k+1} and the sense phase of later steps has nothing left to do. Decide at t_k > 0: the
+  // robots handle the packets and timers (communicate), then the obstacle changes due by the
+  // first route time known before the move to t_k (a robot process learns it from the world
+  // process then); after the last step the robots handle that step's packets once more (finish).
+  const Stepper clock(options.dt_s, options.time_limit_s, "netsim.dt_s", "netsim.time_limit_s");
   std::size_t applied = 0;
-  double now = 0.0;
-  for (int k = 1; k <= steps && !source.arrived(); ++k) {
-    now = k * options.dt_s;
-    radio.set_time(now);
-    const double first_route = source.first_route_s();
-    for (auto& a : agents)
-      a->move(now);
-    for (auto& a : agents)
-      a->flush();
+  double first_route = -1.0;
+  const auto handle = [&](double now) {
     for (auto& a : agents)
       a->communicate(now);
     for (std::size_t i : changes_due(scenario, first_route, now, applied, options.method)) {
@@ -179,13 +175,37 @@ NetSimResult run_netsim(const NetSimScenario& scenario, const NetSimOptions& opt
         a->world_changed(now, box.lo, box.hi);
     }
     snapshot_at_route();
-    if (options.record) {
-      RecordedStep st{now, {}};
-      for (const auto& a : agents)
-        st.positions.push_back(a->position());
-      rec.steps.push_back(std::move(st));
-    }
-  }
+  };
+  Stepper::Phases phases;
+  phases.sense = [&](const Stepper::Step& s) {
+    if (s.k == 0)
+      for (auto& a : agents)
+        a->begin();
+  };
+  phases.decide = [&](const Stepper::Step& s) {
+    if (s.k > 0) return handle(s.t);
+    for (auto& a : agents)
+      a->start();
+    snapshot_at_route();
+  };
+  phases.move = [&](const Stepper::Step& s) {
+    radio.set_time(s.t_end);
+    first_route = source.first_route_s();
+    for (auto& a : agents)
+      a->move(s.t_end);
+    for (auto& a : agents)
+      a->flush();
+  };
+  phases.record = [&](const Stepper::Step& s) {
+    if (!options.record) return;
+    RecordedStep st{s.t_end, {}};
+    for (const auto& a : agents)
+      st.positions.push_back(a->position());
+    rec.steps.push_back(std::move(st));
+  };
+  phases.done = [&] { return source.arrived(); };
+  phases.finish = handle;
+  const double now = clock.run(phases).t_end;
   std::vector<AgentReport> reports;
   for (const auto& a : agents)
     reports.push_back(a->report());

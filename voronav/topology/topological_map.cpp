@@ -25,6 +25,10 @@ void check_options(const TopologyOptions& o) {
   nonneg("TopologyOptions.rise_ratio", o.rise_ratio);
   nonneg("TopologyOptions.max_door_width", o.max_door_width);
   nonneg("TopologyOptions.min_region_area", o.min_region_area);
+  nonneg("TopologyOptions.max_rise_walk", o.max_rise_walk);
+  nonneg("TopologyOptions.passage_length", o.passage_length);
+  nonneg("TopologyOptions.min_wall_area", o.min_wall_area);
+  nonneg("TopologyOptions.passage_rise_ratio", o.passage_rise_ratio);
 }
 
 double sq(Cell a, Cell b) {
@@ -32,44 +36,168 @@ double sq(Cell a, Cell b) {
   return dx * dx + dy * dy;
 }
 
-// Critical points along one Voronoi edge: plateaus of local minima with a sufficient rise on both
-// sides (see the header).
-void find_minima(const voronoi::VoronoiEdge& e, const GridMap<float>& clearance,
-                 double min_rise_cells, double rise_ratio, std::vector<Cell>* out) {
-  const std::size_t n = e.cells.size();
-  if (n < 3) return;
-  std::vector<double> v(n);
-  for (std::size_t i = 0; i < n; ++i)
-    v[i] = static_cast<double>(clearance[e.cells[i]]);
-  std::size_t i = 1;
-  while (i + 1 < n) {
-    if (!(v[i] < v[i - 1])) {
-      ++i;
-      continue;
+// Critical points along the Voronoi graph (see the header): plateaus of local minima of the
+// clearance along an edge whose clearance rises by `need` on both sides, the walk continuing
+// across junctions into every other branch (any branch that rises counts), and passage ends.
+class MinimaFinder {
+ public:
+  MinimaFinder(const voronoi::VoronoiGraph& graph, const GridMap<float>& clearance,
+               const TopologyOptions& o, double res)
+      : graph_(graph),
+        clearance_(clearance),
+        min_rise_(o.min_rise / res),
+        rise_ratio_(o.rise_ratio),
+        walk_(o.max_rise_walk / res),
+        passage_(o.passage_length / res),
+        passage_rise_(o.passage_rise_ratio),
+        incident_(graph.nodes.size()) {
+    for (std::size_t e = 0; e < graph.edges.size(); ++e) {
+      incident_[static_cast<std::size_t>(graph.edges[e].a)].push_back({static_cast<int>(e), 1});
+      incident_[static_cast<std::size_t>(graph.edges[e].b)].push_back({static_cast<int>(e), -1});
     }
-    std::size_t j = i;
-    while (j + 1 < n - 1 && v[j + 1] == v[i])
-      ++j;
-    const double m = v[i];
-    if (!(v[j + 1] > m)) {
-      i = j + 1;
-      continue;
-    }
-    const double need = m + std::max(min_rise_cells, rise_ratio * m);
-    auto rises = [&](std::ptrdiff_t from, std::ptrdiff_t step) {
-      for (std::ptrdiff_t k = from; k >= 0 && k < static_cast<std::ptrdiff_t>(n); k += step) {
-        const double x = v[static_cast<std::size_t>(k)];
-        if (x < m) return false;
-        if (x >= need) return true;
-      }
-      return false;
-    };
-    if (rises(static_cast<std::ptrdiff_t>(i) - 1, -1) &&
-        rises(static_cast<std::ptrdiff_t>(j) + 1, 1))
-      out->push_back(e.cells[(i + j) / 2]);
-    i = j + 1;
   }
-}
+
+  void run(std::vector<Cell>* out) {
+    for (std::size_t e = 0; e < graph_.edges.size(); ++e)
+      edge(static_cast<int>(e), out);
+  }
+
+ private:
+  double value(int e, std::size_t k) const {
+    return static_cast<double>(clearance_[graph_.edges[static_cast<std::size_t>(e)].cells[k]]);
+  }
+
+  // Whether the clearance rises to `need` walking from cell k of edge e in direction step
+  // before it drops below m, within `budget` cells; at an edge end the walk continues into the
+  // node's other branches (when max_rise_walk > 0; else the walk stays on the edge).
+  bool rises(int e, std::ptrdiff_t k, int step, double m, double need, double budget,
+             int* visits) const {
+    const auto& cells = graph_.edges[static_cast<std::size_t>(e)].cells;
+    const auto n = static_cast<std::ptrdiff_t>(cells.size());
+    for (; k >= 0 && k < n; k += step) {
+      const double x = value(e, static_cast<std::size_t>(k));
+      if (x < m) return false;
+      if (x >= need) return true;
+      budget -= 1.0;
+      if (walk_ > 0.0 && budget <= 0.0) return false;
+    }
+    if (walk_ <= 0.0 || ++*visits > 64) return false;
+    const auto& ed = graph_.edges[static_cast<std::size_t>(e)];
+    const int node = step > 0 ? ed.b : ed.a;
+    for (const auto& [e2, dir] : incident_[static_cast<std::size_t>(node)]) {
+      if (e2 == e && dir == -step) continue;  // the end we arrived through
+      const auto n2 =
+          static_cast<std::ptrdiff_t>(graph_.edges[static_cast<std::size_t>(e2)].cells.size());
+      if (rises(e2, dir > 0 ? 1 : n2 - 2, dir, m, need, budget, visits)) return true;
+    }
+    return false;
+  }
+
+  void edge(int e, std::vector<Cell>* out) const {
+    const auto& ed = graph_.edges[static_cast<std::size_t>(e)];
+    const std::size_t n = ed.cells.size();
+    if (n < 3) return;
+    std::vector<double> v(n);
+    for (std::size_t i = 0; i < n; ++i)
+      v[i] = value(e, i);
+    const double budget0 = walk_ > 0.0 ? walk_ : HUGE_VAL;
+    if (passage_ > 0.0) {
+      dead_end(e, v, ed.b, 1, budget0, out);
+      dead_end(e, v, ed.a, -1, budget0, out);
+    }
+    std::size_t i = 1;
+    while (i + 1 < n) {
+      if (!(v[i] < v[i - 1])) {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j + 1 < n - 1 && v[j + 1] == v[i])
+        ++j;
+      const double m = v[i];
+      if (!(v[j + 1] > m)) {
+        i = j + 1;
+        continue;
+      }
+      const double need = m + std::max(min_rise_, rise_ratio_ * m);
+      int visits = 0;
+      const bool left = rises(e, static_cast<std::ptrdiff_t>(i) - 1, -1, m, need, budget0, &visits);
+      visits = 0;
+      const bool right = rises(e, static_cast<std::ptrdiff_t>(j) + 1, 1, m, need, budget0, &visits);
+      bool wide_left = false, wide_right = false;
+      if (passage_ > 0.0 && (left || right)) {
+        const double need2 = std::max(need, m * (1.0 + passage_rise_));
+        visits = 0;
+        wide_left =
+            left && rises(e, static_cast<std::ptrdiff_t>(i) - 1, -1, m, need2, budget0, &visits);
+        visits = 0;
+        wide_right =
+            right && rises(e, static_cast<std::ptrdiff_t>(j) + 1, 1, m, need2, budget0, &visits);
+      }
+      if (wide_left || wide_right) {
+        // A passage: the run of cells around the minimum whose clearance stays within one cell
+        // of it. When it is at least passage_length long, the cuts go at its ends where the
+        // clearance rises (a corridor opening into rooms), not in its middle.
+        const double band = m + 1.0;
+        std::size_t bl = i, br = j;
+        while (bl > 0 && v[bl - 1] >= m && v[bl - 1] <= band)
+          --bl;
+        while (br + 1 < n && v[br + 1] >= m && v[br + 1] <= band)
+          ++br;
+        const auto len = static_cast<double>(br - bl + 1);
+        // Where the classic rule fires (both sides rise) the passage rule replaces its middle
+        // cut only when both ends open wide.
+        if (left && right && !(wide_left && wide_right)) wide_left = wide_right = false;
+        if (len >= passage_) {
+          if (wide_left && bl > 0) out->push_back(ed.cells[bl]);
+          if (wide_right && br + 1 < n) out->push_back(ed.cells[br]);
+          if ((wide_left && bl > 0) || (wide_right && br + 1 < n)) {
+            i = std::max(j, br) + 1;
+            continue;
+          }
+        }
+      }
+      if (left && right) out->push_back(ed.cells[(i + j) / 2]);
+      i = j + 1;
+    }
+  }
+
+  // A passage ending in a dead end (its edge ends at an end node): the run of cells from that
+  // end whose clearance stays within one cell of the end's; when it is at least passage_length
+  // long and the clearance beyond it rises to (1 + passage_rise_ratio) x, it is cut where it
+  // opens (an open-fronted room, a dead-end corridor).
+  void dead_end(int e, const std::vector<double>& v, int node, int end_dir, double budget0,
+                std::vector<Cell>* out) const {
+    if (graph_.nodes[static_cast<std::size_t>(node)].kind != voronoi::VoronoiNodeKind::kEnd) return;
+    const auto n = static_cast<std::ptrdiff_t>(v.size());
+    // Walk from the end inwards: k = last index, step -1 (end at b) or k = 0, step +1 (at a).
+    const int step = -end_dir;
+    std::ptrdiff_t k = end_dir > 0 ? n - 1 : 0;
+    double lo = v[static_cast<std::size_t>(k)], hi = lo;
+    std::ptrdiff_t last = k;
+    for (std::ptrdiff_t q = k + step; q >= 0 && q < n; q += step) {
+      const double x = v[static_cast<std::size_t>(q)];
+      if (std::max(hi, x) - std::min(lo, x) > 1.0) break;
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+      last = q;
+    }
+    if (last + step < 0 || last + step >= n) return;  // the whole edge: no opening on it
+    if (static_cast<double>(std::abs(last - k) + 1) < passage_) return;
+    const double m = lo;
+    const double need =
+        std::max(m + std::max(min_rise_, rise_ratio_ * m), m * (1.0 + passage_rise_));
+    int visits = 0;
+    if (rises(e, last + step, step, m, need, budget0, &visits))
+      out->push_back(
+          graph_.edges[static_cast<std::size_t>(e)].cells[static_cast<std::size_t>(last)]);
+  }
+
+  const voronoi::VoronoiGraph& graph_;
+  const GridMap<float>& clearance_;
+  double min_rise_, rise_ratio_, walk_, passage_, passage_rise_;
+  std::vector<std::vector<std::pair<int, int>>> incident_;  // node -> (edge, +1 from a / -1 from b)
+};
 
 struct UnionFind {
   std::vector<int> parent;
@@ -97,8 +225,25 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
   // 1. Critical points along the Voronoi graph's edges.
   const voronoi::VoronoiGraph graph = voronoi::build_voronoi_graph(diagram, g.clearance);
   std::vector<Cell> minima;
-  for (const auto& e : graph.edges)
-    find_minima(e, g.clearance, o.min_rise / res, o.rise_ratio, &minima);
+  MinimaFinder(graph, g.clearance, o, res).run(&minima);
+  // Obstacle components under min_wall_area are free-standing furniture: a narrowing between
+  // furniture and anything else is not a door (the basis points of a door lie on walls).
+  std::vector<std::size_t> component_cells;
+  if (o.min_wall_area > 0.0)
+    for (std::size_t i = 0; i < g.obstacle_label.size(); ++i) {
+      const std::int32_t l = g.obstacle_label[i];
+      if (l < 0) continue;
+      if (static_cast<std::size_t>(l) >= component_cells.size())
+        component_cells.resize(static_cast<std::size_t>(l) + 1, 0);
+      ++component_cells[static_cast<std::size_t>(l)];
+    }
+  const double min_wall_cells = o.min_wall_area / (res * res);
+  auto on_furniture = [&](Cell s) {
+    if (o.min_wall_area <= 0.0 || !geo.contains(s)) return false;  // outside: the border wall
+    const std::int32_t l = g.obstacle_label[s];
+    return l >= 0 &&
+           static_cast<double>(component_cells[static_cast<std::size_t>(l)]) < min_wall_cells;
+  };
   BinaryGrid cut(geo, 0);
   for (const Cell p : minima) {
     const double clear = static_cast<double>(g.clearance[p]);
@@ -117,6 +262,7 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
         if (sq(t, s1) > sq(s2, s1)) s2 = t;
       }
     if (sq(s1, s2) < 4.0) continue;  // not two separate obstacles
+    if (on_furniture(s1) || on_furniture(s2)) continue;
     CriticalPoint cp;
     cp.cell = p;
     cp.basis = {s1, s2};
@@ -182,6 +328,38 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     if (comp[i] >= 0) area[static_cast<std::size_t>(comp[i])] += res * res;
   UnionFind uf(ncomp);
   const double min_area = o.min_region_area;
+  // 2b. Room test of the critical lines (validate_sides): a line stays only when one of the two
+  // regions it separates is wider than the line, i.e. holds a cell whose clearance reaches the
+  // rise of a passage end; two regions no wider than the line between them are pieces of one
+  // passage (a corridor cut at a small widening) and are joined. Repeated until no line fails.
+  if (o.validate_sides) {
+    std::vector<double> widest(static_cast<std::size_t>(ncomp), 0.0);
+    for (std::size_t i = 0; i < comp.size(); ++i)
+      if (comp[i] >= 0) {
+        auto& w = widest[static_cast<std::size_t>(comp[i])];
+        w = std::max(w, static_cast<double>(g.clearance[i]));
+      }
+    bool changed = true;
+    while (changed) {
+      changed = false;
+      for (std::size_t k = 0; k < out.critical_points.size(); ++k) {
+        if (sides[k].first < 0) continue;
+        const int a = uf.find(sides[k].first), b = uf.find(sides[k].second);
+        if (a == b) continue;
+        const double m = out.critical_points[k].clearance_m / res;
+        const double need = std::max(m + o.min_rise / res,
+                                     m * (1.0 + std::max(o.rise_ratio, o.passage_rise_ratio)));
+        const auto au = static_cast<std::size_t>(a), bu = static_cast<std::size_t>(b);
+        if (widest[au] >= need || widest[bu] >= need) continue;
+        const std::size_t keep = area[au] >= area[bu] ? au : bu;
+        const std::size_t gone = keep == au ? bu : au;
+        uf.parent[gone] = static_cast<int>(keep);
+        area[keep] += area[gone];
+        widest[keep] = std::max(widest[keep], widest[gone]);
+        changed = true;
+      }
+    }
+  }
   while (true) {
     // Current adjacency between merged regions.
     std::map<std::pair<int, int>, double> adj;

@@ -8,6 +8,14 @@
 //    below the critical value (a door or a narrowing). A plateau of equal minima gives one point,
 //    its middle. Its two basis points are the nearest obstacle cell and the nearest obstacle cell
 //    on the other side (the site of a neighbour farthest from the first one).
+//    Options beyond the paper (issue #15, all off by default; measured in
+//    docs/reproductions/topology.md): the rise test may continue across junctions
+//    (max_rise_walk); a passage, a run of at least passage_length whose clearance stays within one
+//    cell of its minimum, is cut at the ends where the clearance rises to (1 + passage_rise_ratio)
+//    x its own, also when only one end opens (a corridor mouth, an open-fronted room, a dead end);
+//    critical points on obstacle pieces under min_wall_area (furniture) are dropped; and the room
+//    test (validate_sides) drops a line when neither region it separates holds a cell whose
+//    clearance reaches that rise (two pieces of one passage).
 //  - critical line: the Bresenham segment between the two basis points.
 //  - regions: the free cells cut by the critical lines, 4-connected components; the cells of the
 //    lines join the smallest adjacent region. Merge rule: a region smaller than min_region_area
@@ -49,6 +57,24 @@ struct TopologyOptions {
   double rise_ratio = 0.25;
   /// Critical points wider than this door width [m] (2 x clearance) are ignored; 0 = no limit.
   double max_door_width = 0.0;
+  /// The rise test of a critical point walks at most this far [m] along the diagram and
+  /// continues across junctions into every other branch (a branch that rises suffices);
+  /// 0 = the walk stays on the point's own edge, unbounded (the earlier rule).
+  double max_rise_walk = 0.0;
+  /// A minimum whose clearance stays within one cell of it along at least this length [m] is a
+  /// passage (a corridor): it is cut at its ends where the clearance rises, not in its middle,
+  /// also when only one end rises; 0 = off.
+  double passage_length = 0.0;
+  /// A passage end is cut only where the clearance beyond it reaches (1 + this) x the
+  /// passage's clearance (a room opens, not a bump in the corridor).
+  double passage_rise_ratio = 1.0;
+  /// Obstacle components (8-connected) smaller than this [m^2] are free-standing furniture; a
+  /// critical point with a basis point on one is not a door and is dropped; 0 = off.
+  double min_wall_area = 0.0;
+  /// Room test of the critical lines: a line is dropped (its two sides merged) when neither side
+  /// holds a cell whose clearance reaches max(clearance + min_rise, clearance x (1 +
+  /// max(rise_ratio, passage_rise_ratio))): both are no wider than the line, pieces of one passage.
+  bool validate_sides = false;
   /// Regions smaller than this [m^2] are merged into a neighbour (see the file comment).
   double min_region_area = 1.0;
 };

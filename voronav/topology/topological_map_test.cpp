@@ -279,3 +279,106 @@ TEST(TopologicalMap, RejectsBadInput) {
 
 }  // namespace
 }  // namespace voronav::topology
+
+namespace voronav::topology {
+namespace {
+
+// A room (50 x 50 cells at 0.05 m) with a 12-cell-wide, 60-cell-long room opening into it over
+// its full width (an open-fronted room or a corridor end): no door jambs, so the clearance along
+// the diagram falls from the big room into the long one and never rises again on its far side.
+// With `far_room`, a second big room closes the long one's far end (a corridor between rooms).
+BinaryGrid room_with_open_passage(bool far_room) {
+  BinaryGrid g(GridGeometry{far_room ? 164 : 113, 52, 0.05, {}}, 1);
+  fill_rect(g, 1, 1, 50, 50, 0);     // room A
+  fill_rect(g, 51, 20, 110, 31, 0);  // the passage, open over its whole width
+  if (far_room) fill_rect(g, 111, 1, 162, 50, 0);
+  return g;
+}
+
+TEST(TopologicalMap, PassageOpeningIntoARoomIsCutAtItsMouth) {
+  const BinaryGrid g = room_with_open_passage(false);
+  // The classic rule (a rise on both sides) finds no critical point: one region.
+  const TopologicalMap classic = build_topological_map(g);
+  EXPECT_EQ(classic.regions.size(), 1U);
+  TopologyOptions o;
+  o.passage_length = 1.0;  // 20 cells; the passage is 60 long
+  const TopologicalMap m = build_topological_map(g, o);
+  ASSERT_EQ(m.regions.size(), 2U);
+  int separating = 0;
+  for (const auto& cp : m.critical_points) {
+    if (!cp.separates) continue;
+    ++separating;
+    EXPECT_NEAR(cp.cell.x, 51, 3) << cp.cell;  // at the mouth, not inside the passage
+    EXPECT_NEAR(cp.clearance_m, 0.3, 0.06);
+  }
+  EXPECT_EQ(separating, 1);
+  // Every passage cell a few cells past the mouth is in one region, every room cell in the other.
+  const int passage = m.region_of(Cell{80, 25}), room = m.region_of(Cell{25, 25});
+  EXPECT_NE(passage, room);
+  for (int y = 20; y <= 31; ++y)
+    for (int x = 56; x <= 110; ++x)
+      EXPECT_EQ(m.region_of(Cell{x, y}), passage) << Cell{x, y};
+  for (int y = 1; y <= 50; ++y)
+    for (int x = 1; x <= 48; ++x)
+      EXPECT_EQ(m.region_of(Cell{x, y}), room) << Cell{x, y};
+}
+
+TEST(TopologicalMap, CorridorBetweenTwoRoomsIsItsOwnRegion) {
+  const BinaryGrid g = room_with_open_passage(true);
+  // Classic: one cut in the middle of the corridor, each half joins a room.
+  const TopologicalMap classic = build_topological_map(g);
+  EXPECT_EQ(classic.regions.size(), 2U);
+  TopologyOptions o;
+  o.passage_length = 1.0;
+  const TopologicalMap m = build_topological_map(g, o);
+  ASSERT_EQ(m.regions.size(), 3U);
+  const int a = m.region_of(Cell{25, 25}), c = m.region_of(Cell{80, 25}),
+            b = m.region_of(Cell{136, 25});
+  EXPECT_EQ(std::set<int>({a, b, c}).size(), 3U);
+  const auto corridor = m.regions[static_cast<std::size_t>(c)].cells;
+  EXPECT_GE(corridor, 50U * 12U);  // the corridor, cut within a few cells of both mouths
+  EXPECT_LE(corridor, 66U * 12U);
+  // The room test keeps both cuts: each separates the narrow corridor from a wide room.
+  o.validate_sides = true;
+  EXPECT_EQ(build_topological_map(g, o).regions.size(), 3U);
+}
+
+TEST(TopologicalMap, RoomTestMergesPiecesOfOnePassage) {
+  // Two passages of one width, 12 cells, joined at a right angle, each opening into a big room at
+  // its other end. With a low rise ratio the bend's small widening makes critical points inside
+  // the L; the room test drops a line whose two sides are both no wider than the passage.
+  BinaryGrid g(GridGeometry{170, 170, 0.05, {}}, 1);
+  fill_rect(g, 1, 1, 50, 50, 0);        // room A
+  fill_rect(g, 51, 20, 130, 31, 0);     // passage east from A
+  fill_rect(g, 119, 32, 130, 110, 0);   // passage north
+  fill_rect(g, 100, 111, 160, 165, 0);  // room B
+  TopologyOptions o;
+  o.passage_length = 1.0;
+  o.rise_ratio = 0.05;
+  o.min_rise = 0.05;
+  o.validate_sides = true;
+  const TopologicalMap m = build_topological_map(g, o);
+  const int a = m.region_of(Cell{25, 25}), b = m.region_of(Cell{130, 140});
+  const int east = m.region_of(Cell{90, 25}), north = m.region_of(Cell{125, 70});
+  EXPECT_NE(a, east);
+  EXPECT_NE(b, north);
+  EXPECT_EQ(east, north);  // one passage, one region
+  o.validate_sides = false;
+  const TopologicalMap split = build_topological_map(g, o);
+  EXPECT_GT(split.regions.size(), m.regions.size());
+}
+
+TEST(TopologicalMap, NewCriticalPointOptionsAreChecked) {
+  const BinaryGrid g = room_with_open_passage(false);
+  for (const char* which : {"max_rise_walk", "passage_length", "passage_rise_ratio"}) {
+    TopologyOptions o;
+    const std::string w = which;
+    (w == "max_rise_walk"    ? o.max_rise_walk
+     : w == "passage_length" ? o.passage_length
+                             : o.passage_rise_ratio) = -1.0;
+    EXPECT_THROW((void)build_topological_map(g, o), Error) << which;
+  }
+}
+
+}  // namespace
+}  // namespace voronav::topology

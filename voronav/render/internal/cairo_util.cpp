@@ -100,7 +100,8 @@ void save_surface(const std::filesystem::path& path, int w, int h,
   const bool png = ext == ".png", svg = ext == ".svg";
   if (!png && !svg)
     throw Error(path.string(), 0, "picture format '" + ext + "': expected .png or .svg");
-  if (path.has_parent_path() && !std::filesystem::exists(path.parent_path()))
+  std::error_code folder_error;  // an unreadable or over-long folder name is reported, not thrown
+  if (path.has_parent_path() && !std::filesystem::is_directory(path.parent_path(), folder_error))
     throw Error(path.string(), 0, "the folder " + path.parent_path().string() + " does not exist");
   std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
       png ? cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h)
