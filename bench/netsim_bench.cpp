@@ -5,9 +5,11 @@
 // counters; bench/run_netsim_bench.sh turns them into bench/results/networked.md.
 //
 //   netsim_bench [google benchmark flags]        the default set (6..100 robots, both methods)
-//   netsim_bench --case ROBOTS SIZE_M METHOD [LIMIT_S] [SEED] [KEY=VALUE...]
+//   netsim_bench --case ROBOTS SIZE_M METHOD [LIMIT_S] [SEED] [defaults] [KEY=VALUE...]
 //                                                 one run, one JSON line on stdout; KEY is one of
-//                                                 the scale options of NetSimOptions or loss
+//                                                 the scale options of NetSimOptions or loss;
+//                                                 `defaults` starts from the default options
+//                                                 instead of NetSimOptions::scale_options()
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -93,7 +95,9 @@ BENCHMARK(BM_NetsimScale)
 
 int run_one(int argc, char** argv) {
   if (argc < 5) {
-    std::fprintf(stderr, "usage: %s --case ROBOTS SIZE_M METHOD [LIMIT_S] [SEED] [KEY=VALUE...]\n",
+    std::fprintf(stderr,
+                 "usage: %s --case ROBOTS SIZE_M METHOD [LIMIT_S] [SEED] [defaults] "
+                 "[KEY=VALUE...]\n",
                  argv[0]);
     return 2;
   }
@@ -103,7 +107,12 @@ int run_one(int argc, char** argv) {
   const double limit_s = argc > 5 ? std::atof(argv[5]) : 600.0;
   const std::uint64_t seed = argc > 6 ? std::strtoull(argv[6], nullptr, 10) : 1;
   auto o = voronav::sim::NetSimOptions{}.scale_options();
-  for (int i = 7; i < argc; ++i)
+  int first_option = 7;
+  if (argc > 7 && std::string(argv[7]) == "defaults") {
+    o = voronav::sim::NetSimOptions{};
+    first_option = 8;
+  }
+  for (int i = first_option; i < argc; ++i)
     if (!set_option(o, argv[i])) {
       std::fprintf(stderr, "unknown option %s\n", argv[i]);
       return 2;
@@ -115,12 +124,15 @@ int run_one(int argc, char** argv) {
       "\"route_time_s\": %.1f, \"arrival_time_s\": %.1f, \"simulated_s\": %.1f, \"wall_s\": %.2f, "
       "\"sim_s_per_wall_s\": %.3f, \"traffic_bytes_per_robot\": %.1f, "
       "\"messages_per_robot\": %.2f, \"search_attempts\": %d, \"travel_m\": %.1f, "
-      "\"max_robot_cpu_s\": %.3f}\n",
+      "\"max_robot_cpu_s\": %.3f, \"route_found_by\": \"%s\", \"route_robots\": %d, "
+      "\"paths_lost\": %d, \"options\": \"%s\"}\n",
       robots, size_m, std::string(voronav::sim::to_string(method)).c_str(),
       static_cast<unsigned long long>(seed), m.success ? "true" : "false", m.route_time_s,
       m.arrival_time_s, m.simulated_s, m.wall_s, m.wall_s > 0 ? m.simulated_s / m.wall_s : 0.0,
       static_cast<double>(m.traffic_bytes) / n, static_cast<double>(m.messages) / n,
-      m.search_attempts, m.travel_m, m.max_robot_cpu_s);
+      m.search_attempts, m.travel_m, m.max_robot_cpu_s,
+      std::string(voronav::sim::to_string(m.route_found_by)).c_str(), m.route_robots, m.paths_lost,
+      first_option == 8 ? "defaults" : "scale");
   return 0;
 }
 

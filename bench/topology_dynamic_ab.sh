@@ -2,7 +2,8 @@
 # A/B of the dynamic GVD benchmark (bench/topology_dynamic_bench.cpp) between two builds, runs
 # interleaved so that both see the same machine load (the machine is shared: absolute times drift
 # by +-30 % from run to run, the A/B ratio is the figure to compare). Prints, per map, the median
-# over the rounds of the CPU time per change (update/*) or per build (full/*) of each side.
+# and the minimum over the rounds of the CPU time per change (update/*) or per build (full/*) of
+# each side (the minimum is the least disturbed round: the better figure for an A/B of code).
 # Usage: bench/topology_dynamic_ab.sh BASE_BIN_DIR NEW_BIN_DIR [filter] [rounds] [min-time]
 #   *_BIN_DIR: a build's bin/ folder holding topology_dynamic_bench (each binary finds its own
 #   libraries through its RUNPATH, or beside it when copied there); filter: a --benchmark_filter regex (default update/).
@@ -37,11 +38,12 @@ for side in ("base", "new"):
         for b in json.load(open(f))["benchmarks"]:
             per = b["cpu_time"] / (20.0 if b["name"].startswith("update/") else 1.0)
             times.setdefault(b["name"], {}).setdefault(side, []).append(per)
-print(f"| benchmark | base ms | new ms | new / base |  (median of {rounds} interleaved rounds)")
-print("|---|---|---|---|")
+print(f"| benchmark | base ms | new ms | new / base | base min | new min | new / base (min) |  (median and minimum of {rounds} interleaved rounds)")
+print("|---|---|---|---|---|---|---|")
 for name, t in times.items():
     if "base" not in t or "new" not in t:
         continue
     b, n = statistics.median(t["base"]), statistics.median(t["new"])
-    print(f"| {name} | {b:.3f} | {n:.3f} | {n / b:.2f} |")
+    bm, nm = min(t["base"]), min(t["new"])
+    print(f"| {name} | {b:.3f} | {n:.3f} | {n / b:.2f} | {bm:.3f} | {nm:.3f} | {nm / bm:.2f} |")
 PY

@@ -9,7 +9,8 @@
 // say which mechanism did the work: rows and row cells of the EDT, cells whose distance or site
 // changed, cells the re-thinning and re-pruning examined, steps of the longest stored thinning
 // run, label repartitions (merges/splits) per change, raw cells whose clearance changed and those
-// of them that flip the clearance order of two raw neighbours (the thinning replays only these).
+// of them that flip the clearance order of two raw neighbours (the thinning replays only these),
+// changes that the re-thinnings after pruning left dormant and those woken up again.
 // bench/topology_dynamic.sh turns the JSON output into bench/results/topology_dynamic.md.
 #include <benchmark/benchmark.h>
 
@@ -75,7 +76,7 @@ void update(benchmark::State& state, const BinaryGrid* map) {
   std::vector<voronoi::CellChange> changes(9);
   std::size_t k = 0;
   double rows = 0, row_cells = 0, skel = 0, repart = 0, changes_done = 0, steps = 0, dist = 0;
-  double keys = 0, thin_keys = 0;
+  double keys = 0, thin_keys = 0, dormant = 0, woken = 0;
   auto apply = [&](Cell c, bool add) {
     int n = 0;
     for (int dy = -1; dy <= 1; ++dy)
@@ -90,6 +91,8 @@ void update(benchmark::State& state, const BinaryGrid* map) {
     dist += static_cast<double>(st.changed_distances);
     keys += static_cast<double>(st.key_changes);
     thin_keys += static_cast<double>(st.thin_key_changes);
+    dormant += static_cast<double>(st.rethin_dormant);
+    woken += static_cast<double>(st.rethin_woken);
     changes_done += 1.0;
   };
   for (auto _ : state) {
@@ -110,6 +113,8 @@ void update(benchmark::State& state, const BinaryGrid* map) {
   state.counters["changed_distances_per_change"] = dist / changes_done;
   state.counters["key_changes_per_change"] = keys / changes_done;
   state.counters["thin_key_changes_per_change"] = thin_keys / changes_done;
+  state.counters["rethin_dormant_per_change"] = dormant / changes_done;
+  state.counters["rethin_woken_per_change"] = woken / changes_done;
 }
 
 }  // namespace

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <queue>
+#include <tuple>
 
 #include "voronav/core/error.hpp"
 #include "voronav/field/distance_transform.hpp"
@@ -204,11 +206,13 @@ PointSearch search_points(std::span<const VoronoiPoint> points, std::span<const 
 
 namespace {
 
+constexpr double kHuge = 1e300;  // "no limit" for a reach in PointGrid::for_each_near
+
 /// Points bucketed by position into square cells of side h (counting sort); settled points are
 /// taken out, so the order within a cell changes (the search's result does not depend on it).
 class PointGrid {
  public:
-  PointGrid(std::span<const VoronoiPoint> points, double h) {
+  PointGrid(std::span<const VoronoiPoint> points, double h, double robot_radius) {
     double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
     x0_ = std::numeric_limits<double>::infinity();
     y0_ = x0_;
@@ -241,6 +245,10 @@ class PointGrid {
     end_.assign(begin_.begin(), begin_.end() - 1);
     for (std::size_t i = 0; i < points.size(); ++i)
       order_[end_[cell_[i]]++] = i;
+    reach_.assign(begin_.size() - 1, -std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < points.size(); ++i)
+      reach_[cell_[i]] =
+          std::max(reach_[cell_[i]], static_cast<double>(points[i].clearance) - robot_radius);
   }
   /// Takes point i out of its cell (a settled point is never compared again).
   void remove(std::size_t i) {
@@ -251,17 +259,27 @@ class PointGrid {
         return;
       }
   }
-  /// Calls f(j) for every point j in the cells that overlap the square [p - R, p + R].
+  /// Calls f(j) for every point j in the cells that overlap the square [p - R, p + R] and whose
+  /// rectangle is within `reach` plus the cell's largest (c - r) of p, or within `always` of p
+  /// (`margin` is added to both, for rounding).
   template <typename F>
-  void for_each_near(Vec2 p, double radius, F&& f) const {
+  void for_each_near(Vec2 p, double radius, double reach, double always, double margin,
+                     F&& f) const {
     const int xa = cx(p.x - radius), xb = cx(p.x + radius);
     const int ya = cy(p.y - radius), yb = cy(p.y + radius);
-    for (int y = ya; y <= yb; ++y)
+    for (int y = ya; y <= yb; ++y) {
+      const double ylo = y0_ + h_ * y, dy = std::max({0.0, ylo - p.y, p.y - (ylo + h_)});
       for (int x = xa; x <= xb; ++x) {
         const std::size_t c = index(x, y);
+        if (begin_[c] == end_[c]) continue;
+        const double xlo = x0_ + h_ * x, dx = std::max({0.0, xlo - p.x, p.x - (xlo + h_)});
+        const double d2 = dx * dx + dy * dy;
+        const double lim = std::max(reach + reach_[c], always) + margin;
+        if (lim < 0.0 || d2 > lim * lim) continue;
         for (std::size_t k = begin_[c]; k < end_[c]; ++k)
           f(order_[k]);
       }
+    }
   }
 
  private:
@@ -282,24 +300,28 @@ class PointGrid {
   std::vector<std::size_t> end_;    // one past the last point still in each cell
   std::vector<std::size_t> cell_;   // cell of each point
   std::vector<std::size_t> order_;
+  std::vector<double> reach_;  // per cell: the largest (c - r) of its points
 };
 
 }  // namespace
 
-PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
-                                   std::span<const double> start_cost, double robot_radius_m,
-                                   const BoundedExtraEdges& extra) {
-  if (start_cost.size() != points.size())
-    throw Error("search_points", 0, "start_cost must have one entry per point");
+namespace {
+
+/// Which of two points of equal cost the search settles first: the one with the lower key. For
+/// the plain search the key is the point's index; for merged copies (see below) it is the index
+/// of the copy that the search over all points would settle first.
+struct TieKeys {
+  std::span<const std::size_t> at_start;  ///< while a point keeps its start cost
+  std::span<const std::size_t> reached;   ///< once a relaxation lowered it
+};
+
+/// The grid search itself (search_points_bucketed without the merging of duplicates); the
+/// caller has checked the input.
+PointSearch search_grid(std::span<const VoronoiPoint> points, std::span<const double> start_cost,
+                        double robot_radius_m, const BoundedExtraEdges& extra,
+                        const TieKeys& keys = {}, std::vector<std::int32_t>* tie_parent = nullptr) {
   const std::size_t n = points.size();
   const bool has_edge = static_cast<bool>(extra.edge);
-  bool finite = true;
-  for (const auto& p : points)
-    finite = finite && std::isfinite(p.position.x) && std::isfinite(p.position.y);
-  if (!finite || (has_edge && !(extra.max_distance_m < std::numeric_limits<double>::infinity())))
-    return search_points(points, start_cost, robot_radius_m, extra.edge);  // nothing to bound by
-  for (const auto& [i, j] : extra.unbounded_pairs)
-    if (i >= n || j >= n) throw Error("search_points", 0, "an unbounded pair names no point");
   // The largest (c - r): a point i continues no point farther than (c_i - r) + amax.
   double amax = 0.0;
   for (const auto& p : points)
@@ -307,7 +329,9 @@ PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
   const double emax = has_edge ? std::max(0.0, extra.max_distance_m) : 0.0;
   // Cells of side amax: a point looks (c - r) + amax <= 2 amax around it for continuing points
   // (5 x 5 cells); a point in the edge range also emax around it.
-  const double cell_side = amax > 0.0 ? amax : std::max(emax, 1.0);
+  // (Cells no wider than 1 m: each cell's largest (c - r) then prunes well where narrow
+  // corridors and wide rooms mix.)
+  const double cell_side = amax > 0.0 ? std::min(amax, 1.0) : std::max(emax, 1.0);
   // Adjacency of the unbounded pairs (CSR).
   std::vector<std::size_t> adj_begin(n + 1, 0), adj;
   if (has_edge && !extra.unbounded_pairs.empty()) {
@@ -328,52 +352,208 @@ PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
   s.cost.assign(n, std::numeric_limits<double>::infinity());
   s.parent.assign(n, -1);
   if (n == 0) return s;
-  PointGrid grid(points, cell_side);
-  using Item = std::pair<double, std::size_t>;
+  PointGrid grid(points, cell_side, robot_radius_m);
+  const bool keyed = !keys.at_start.empty();
+  using Item = std::tuple<double, std::size_t, std::size_t>;  // cost, tie key, point
   std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
   for (std::size_t i = 0; i < n; ++i)
     if (std::isfinite(start_cost[i])) {
       s.cost[i] = start_cost[i];
-      open.push({start_cost[i], i});
+      open.push({start_cost[i], keyed ? keys.at_start[i] : i, i});
     }
+  if (tie_parent) tie_parent->assign(n, -1);
   std::vector<std::uint8_t> done(n, 0);
   std::vector<std::size_t> seen(n, n);  // the settled point that last compared j
   while (!open.empty()) {
     // Plain variables, not a structured binding: the lambda below captures them (C++20 allows
     // capturing bindings, clang before 16 does not).
-    const double c = open.top().first;
-    const std::size_t i = open.top().second;
+    const double c = std::get<0>(open.top());
+    const std::size_t i = std::get<2>(open.top());
     open.pop();
     if (done[i]) continue;
     done[i] = 1;
     grid.remove(i);
     s.work += n;  // what the all-pairs search examines for this settled point
     const VoronoiPoint& pi = points[i];
-    auto relax = [&](std::size_t j) {
+    const bool in_range = has_edge && i >= extra.range_begin && i < extra.range_end;
+    // may_edge: edge() can join i and j (an unbounded pair, or both in the edge range).
+    auto relax = [&](std::size_t j, bool may_edge) {
       if (seen[j] == i) return;
       seen[j] = i;
       ++s.candidates;
       if (done[j]) return;
-      if (!continues_inline(pi, points[j], robot_radius_m) && !(has_edge && extra.edge(i, j)))
+      if (!continues_inline(pi, points[j], robot_radius_m) && !(may_edge && extra.edge(i, j)))
         return;
       const double nc = c + distance(pi.position, points[j].position);
       if (nc < s.cost[j]) {
         s.cost[j] = nc;
         s.parent[j] = static_cast<std::int32_t>(i);
-        open.push({nc, j});
+        open.push({nc, keyed ? keys.reached[j] : j, j});
+      } else if (tie_parent && nc == s.cost[j] && s.parent[j] < 0 && (*tie_parent)[j] < 0) {
+        // j keeps its start, but a copy that started higher is reached here at the same cost.
+        (*tie_parent)[j] = static_cast<std::int32_t>(i);
+        if (keyed) open.push({nc, keys.reached[j], j});
       }
     };
+    // Unbounded pairs first: a pair the grid visits is not compared again (seen).
+    for (std::size_t k = adj_begin[i]; k < adj_begin[i + 1]; ++k)
+      relax(adj[k], true);
     const double ai = static_cast<double>(pi.clearance) - robot_radius_m;
-    const bool in_range = has_edge && i >= extra.range_begin && i < extra.range_end;
     double radius = std::max(ai > 0.0 ? ai + amax : 0.0, in_range ? emax : 0.0);
     if (ai > 0.0 || in_range) {  // (an edge bound of 0 still joins points at one place)
       // A margin for rounding: the exact tests decide, the grid only has to include.
-      radius += 1e-6 * (1.0 + radius + std::abs(pi.position.x) + std::abs(pi.position.y));
-      grid.for_each_near(pi.position, radius, relax);
+      const double margin =
+          1e-6 * (1.0 + radius + std::abs(pi.position.x) + std::abs(pi.position.y));
+      // A cell can hold a point that continues i only within (c_i - r) + its largest (c - r).
+      grid.for_each_near(pi.position, radius + margin, ai > 0.0 ? ai : -kHuge,
+                         in_range ? emax : -kHuge, margin, [&](std::size_t j) {
+                           relax(j, in_range && j >= extra.range_begin && j < extra.range_end);
+                         });
     }
-    for (std::size_t k = adj_begin[i]; k < adj_begin[i + 1]; ++k)
-      relax(adj[k]);
   }
+  return s;
+}
+
+/// Points that are exact copies of each other (a Search merged from re-forwards carries the same
+/// point several times): same position and clearance, clearance > r (so each copy continues
+/// the others at distance 0), outside the extra-edge range and in no unbounded pair (so the
+/// caller's edge() cannot tell them apart). `group[i]` is the lowest index of i's copies.
+std::vector<std::size_t> copy_groups(std::span<const VoronoiPoint> points, double robot_radius_m,
+                                     const BoundedExtraEdges& extra, bool& any) {
+  const std::size_t n = points.size();
+  std::vector<std::uint8_t> fixed(n, 0);
+  for (const auto& [i, j] : extra.unbounded_pairs) {
+    fixed[i] = 1;
+    fixed[j] = 1;
+  }
+  // Open addressing on (x, y, clearance), in index order: the first point of a key is the
+  // lowest index of its copies.
+  std::size_t cap = 16;
+  while (cap < 2 * n)
+    cap *= 2;
+  std::vector<std::size_t> table(cap, n);  // n = empty slot
+  auto bits = [](double d) {
+    std::uint64_t u = 0;
+    std::memcpy(&u, &d, sizeof u);
+    return u;
+  };
+  std::vector<std::size_t> group(n);
+  std::iota(group.begin(), group.end(), std::size_t{0});
+  any = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool in_range = extra.edge && i >= extra.range_begin && i < extra.range_end;
+    const auto& p = points[i];
+    if (fixed[i] || in_range || !(static_cast<double>(p.clearance) - robot_radius_m > 0.0))
+      continue;
+    std::uint64_t h = bits(p.position.x) * 0x9e3779b97f4a7c15ull;
+    h = (h ^ (h >> 29) ^ bits(p.position.y)) * 0xbf58476d1ce4e5b9ull;
+    h = (h ^ (h >> 31) ^ bits(static_cast<double>(p.clearance))) * 0x94d049bb133111ebull;
+    for (std::size_t k = (h ^ (h >> 32)) & (cap - 1);; k = (k + 1) & (cap - 1)) {
+      if (table[k] == n) {
+        table[k] = i;
+        break;
+      }
+      const auto& q = points[table[k]];
+      if (q.position.x == p.position.x && q.position.y == p.position.y &&
+          q.clearance == p.clearance) {
+        group[i] = table[k];
+        any = true;
+        break;
+      }
+    }
+  }
+  return group;
+}
+
+}  // namespace
+
+PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
+                                   std::span<const double> start_cost, double robot_radius_m,
+                                   const BoundedExtraEdges& extra) {
+  if (start_cost.size() != points.size())
+    throw Error("search_points", 0, "start_cost must have one entry per point");
+  const std::size_t n = points.size();
+  const bool has_edge = static_cast<bool>(extra.edge);
+  bool finite = true;
+  for (const auto& p : points)
+    finite = finite && std::isfinite(p.position.x) && std::isfinite(p.position.y);
+  if (!finite || (has_edge && !(extra.max_distance_m < std::numeric_limits<double>::infinity())))
+    return search_points(points, start_cost, robot_radius_m, extra.edge);  // nothing to bound by
+  for (const auto& [i, j] : extra.unbounded_pairs)
+    if (i >= n || j >= n) throw Error("search_points", 0, "an unbounded pair names no point");
+  bool any_copy = false;
+  const auto group = copy_groups(points, robot_radius_m, extra, any_copy);
+  if (!any_copy) return search_grid(points, start_cost, robot_radius_m, extra);
+  // Search one point per group of copies (its cheapest start), then give every copy the result
+  // the search over all points gives it. In that search the copies of a group all receive the
+  // same relaxations from other points (same position and clearance); the first copy settled,
+  // F, relaxes the others at distance 0, and every later point reached through the group gets F
+  // as its parent (the later copies offer the same cost, which is not lower). So:
+  //  - a group reached below its cheapest start m (from point k): every copy has that cost and
+  //    parent k; F is the lowest index;
+  //  - otherwise F is the lowest index whose start is m; every copy costs m, the copies whose
+  //    start is m keep parent -1, the others get parent F.
+  // (Exact floating-point ties between a relaxation and m are the one case this does not cover.)
+  std::vector<std::size_t> compact_of(n), full_of;                    // point <-> compact index
+  std::vector<double> m(n, std::numeric_limits<double>::infinity());  // per group leader
+  for (std::size_t i = 0; i < n; ++i)
+    m[group[i]] = std::min(m[group[i]], start_cost[i]);
+  std::vector<VoronoiPoint> cpoints;
+  std::vector<double> cstart;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (group[i] != i) {
+      compact_of[i] = compact_of[group[i]];
+      continue;
+    }
+    compact_of[i] = full_of.size();
+    full_of.push_back(i);
+    cpoints.push_back(points[i]);
+    cstart.push_back(m[i]);
+  }
+  BoundedExtraEdges cextra;
+  cextra.max_distance_m = extra.max_distance_m;
+  if (has_edge) {
+    // Points in the edge range are never merged, so the range stays contiguous.
+    cextra.edge = [&](std::size_t a, std::size_t b) { return extra.edge(full_of[a], full_of[b]); };
+    cextra.range_begin = static_cast<std::size_t>(
+        std::lower_bound(full_of.begin(), full_of.end(), extra.range_begin) - full_of.begin());
+    cextra.range_end = static_cast<std::size_t>(
+        std::lower_bound(full_of.begin(), full_of.end(), extra.range_end) - full_of.begin());
+  }
+  for (const auto& [i, j] : extra.unbounded_pairs)
+    cextra.unbounded_pairs.emplace_back(compact_of[i], compact_of[j]);
+  // F of every group while it keeps its start (the lowest index whose start is m) and once it
+  // is reached below m (the lowest index): equal costs are settled in the order of these keys,
+  // as the search over all points settles them in the order of their indices.
+  std::vector<std::size_t> first_at_start(full_of.begin(), full_of.end());
+  for (std::size_t i = n; i-- > 0;) {
+    const std::size_t c = compact_of[i];
+    if (start_cost[i] == cstart[c]) first_at_start[c] = i;  // ends at the lowest
+  }
+  std::vector<std::int32_t> tie;  // (see search_grid) the group's copies that started above m
+  const PointSearch cs =
+      search_grid(cpoints, cstart, robot_radius_m, cextra, TieKeys{first_at_start, full_of}, &tie);
+  std::vector<std::size_t> first(full_of.size());
+  for (std::size_t c = 0; c < full_of.size(); ++c)
+    first[c] = cs.parent[c] < 0 && tie[c] < 0 ? first_at_start[c] : full_of[c];
+  PointSearch s;
+  s.cost.assign(n, std::numeric_limits<double>::infinity());
+  s.parent.assign(n, -1);
+  s.candidates = cs.candidates;
+  std::size_t reached = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t c = compact_of[i];
+    s.cost[i] = cs.cost[c];
+    if (!std::isfinite(cs.cost[c])) continue;
+    ++reached;
+    if (cs.parent[c] >= 0) {
+      s.parent[i] = static_cast<std::int32_t>(first[static_cast<std::size_t>(cs.parent[c])]);
+    } else if (start_cost[i] != cstart[c]) {
+      s.parent[i] = static_cast<std::int32_t>(tie[c] >= 0 ? first[static_cast<std::size_t>(tie[c])]
+                                                          : first[c]);
+    }
+  }
+  s.work = reached * n;  // the all-pairs search settles every reached point and examines n pairs
   return s;
 }
 

@@ -89,9 +89,14 @@ struct BoundedExtraEdges {
 /// candidates of each settled point come from a uniform grid of the points by position: a point
 /// is only compared with points in the grid cells that can hold one that continues it (within
 /// its (c - r) plus the largest (c - r) of all points) or that `extra.edge` may join (within
-/// `extra.max_distance_m`), plus `extra.unbounded_pairs`. `work` still counts the pairs the
-/// paper's all-pairs search examines (n per settled point), so the computation metric (eq. 8-9)
-/// keeps its meaning; `candidates` counts the pairs actually compared.
+/// `extra.max_distance_m`), plus `extra.unbounded_pairs`; a grid cell is skipped when no point in
+/// it can continue the settled one (its rectangle is farther than (c - r) plus the cell's largest
+/// (c - r)), and edge() is asked only about pairs in its range or unbounded. Exact copies (same
+/// position and clearance, clearance > r, outside the edge range and in no unbounded pair; merged
+/// Searches repeat points) are searched as one point; every copy then gets the cost and parent
+/// the all-pairs search gives it (ties included). `work` still counts the pairs the paper's
+/// all-pairs search examines (n per settled point, n counting every copy), so the computation
+/// metric (eq. 8-9) keeps its meaning; `candidates` counts the pairs actually compared.
 [[nodiscard]] PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
                                                  std::span<const double> start_cost,
                                                  double robot_radius_m,

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <numeric>
 #include <random>
 
 #include "voronav/core/error.hpp"
@@ -176,6 +179,107 @@ TEST(VoronoiPoints, BucketedSearchEqualsAllPairsSearch) {
   // The sets are not trivial: many points are reached through edges, and the grid prunes.
   EXPECT_GT(reached_total, 2000u);
   EXPECT_GT(fewer_candidates, 50u);
+}
+
+// Merged Searches carry the same point many times (re-forwards): the search takes one point per
+// group of copies and gives every copy the result of the all-pairs search (cost, parent, work).
+TEST(VoronoiPoints, BucketedSearchMergesCopiesWithTheAllPairsResult) {
+  const double r = 0.2;
+  std::size_t copies_total = 0, reached_via_copy = 0, ties = 0;
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+    std::mt19937_64 rng(seed * 7919);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const std::size_t unique = 1 + rng() % 60;
+    const double side = 2.0 + 30.0 * u(rng);
+    // Even seeds: points on a 0.5 m lattice with costs in 0.5 steps, so a relaxation often
+    // equals a copy's start cost exactly (as float costs of real Searches do).
+    const bool lattice = seed % 2 == 0;
+    auto q = [&](double v) { return lattice ? 0.5 * std::round(2.0 * v) : v; };
+    std::vector<VoronoiPoint> base;
+    for (std::size_t i = 0; i < unique; ++i)
+      base.push_back({{q(side * u(rng)), q(side * u(rng))},
+                      static_cast<float>(lattice ? 0.45 + 0.25 * static_cast<double>(rng() % 4)
+                                                 : 0.1 + 2.5 * u(rng)),
+                      0.0f});
+    // Each point appears 1-6 times in random order; the copies of a start point carry the same
+    // cost (a re-forward that did not improve it), a better one, or none.
+    std::vector<VoronoiPoint> pts;
+    std::vector<double> start;
+    std::vector<double> base_cost(unique, std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < unique; ++i)
+      if (rng() % 2 == 0) base_cost[i] = q(3.0 * u(rng));
+    for (std::size_t i = 0; i < unique; ++i)
+      for (std::size_t k = 0, copies = 1 + rng() % 6; k < copies; ++k) {
+        pts.push_back(base[i]);
+        const auto pick = rng() % 3;
+        start.push_back(pick == 0   ? base_cost[i]
+                        : pick == 1 ? std::numeric_limits<double>::infinity()
+                                    : base_cost[i] + q(2.0 * u(rng)));
+        copies_total += k > 0;
+      }
+    std::vector<std::size_t> perm(pts.size());
+    std::iota(perm.begin(), perm.end(), std::size_t{0});
+    std::shuffle(perm.begin(), perm.end(), rng);
+    std::vector<VoronoiPoint> p2;
+    std::vector<double> s2;
+    for (std::size_t i : perm) {
+      p2.push_back(pts[i]);
+      s2.push_back(start[i]);
+    }
+    // Own points (an edge range at the end, never merged) joined by a few straight moves.
+    const std::size_t own_begin = p2.size();
+    for (std::size_t k = 0; k < 5; ++k) {
+      p2.push_back(base[rng() % unique]);  // an own point may sit where a sender point is
+      s2.push_back(std::numeric_limits<double>::infinity());
+    }
+    BoundedExtraEdges extra;
+    extra.max_distance_m = 4.0;
+    extra.range_begin = own_begin;
+    extra.range_end = p2.size();
+    auto edge = [&](std::size_t i, std::size_t j) {
+      if (i < own_begin || j < own_begin) return false;
+      return distance(p2[i].position, p2[j].position) <= 4.0 && (i + j) % 2 == 1;
+    };
+    extra.edge = edge;
+    const auto plain = search_points(p2, s2, r, edge);
+    const auto merged = search_points_bucketed(p2, s2, r, extra);
+    ASSERT_EQ(plain.cost, merged.cost) << "seed " << seed;
+    ASSERT_EQ(plain.parent, merged.parent) << "seed " << seed;
+    ASSERT_EQ(plain.work, merged.work) << "seed " << seed;
+    for (std::size_t i = 0; i < p2.size(); ++i) {
+      if (plain.parent[i] < 0) continue;
+      const auto& par = p2[static_cast<std::size_t>(plain.parent[i])];
+      if (par.position == p2[i].position) ++reached_via_copy;
+      if (par.position != p2[i].position && std::isfinite(s2[i]) && plain.cost[i] < s2[i]) {
+        for (std::size_t k = 0; k < p2.size(); ++k)  // a copy of i kept this cost as its start
+          if (k != i && p2[k].position == p2[i].position && p2[k].clearance == p2[i].clearance &&
+              s2[k] == plain.cost[i]) {
+            ++ties;
+            break;
+          }
+      }
+    }
+  }
+  EXPECT_GT(copies_total, 1000u);
+  EXPECT_GT(reached_via_copy, 100u);  // copies relaxed by their first settled copy occur
+  EXPECT_GT(ties, 10u);  // copies reached exactly at their cheapest start from another point
+  // Copies are compared once: 300 copies of 3 points need a handful of comparisons.
+  std::vector<VoronoiPoint> many;
+  std::vector<double> start;
+  for (int k = 0; k < 100; ++k)
+    for (int i = 0; i < 3; ++i) {
+      many.push_back({{1.0 * i, 0.0}, 1.0f, 0.0f});
+      start.push_back(k == 50 && i == 0 ? 0.0 : std::numeric_limits<double>::infinity());
+    }
+  const auto s = search_points_bucketed(many, start, r);
+  EXPECT_LE(s.candidates, 9u);
+  EXPECT_EQ(s.work, 300u * 300u);
+  EXPECT_EQ(s.cost[150], 0.0);
+  EXPECT_EQ(s.parent[150], -1);
+  EXPECT_EQ(s.parent[0], 150);    // a copy of the start, reached from it at distance 0
+  EXPECT_EQ(s.parent[151], 150);  // the next point, from the first settled copy
+  EXPECT_EQ(s.cost[299], 2.0);
+  EXPECT_EQ(s.parent[299], 1);  // from the first settled copy of (1, 0)
 }
 
 TEST(VoronoiPoints, BucketedSearchRejectsBadInput) {

@@ -134,7 +134,7 @@ bool RobotAgent::try_continue() {
     const Vec2 a = r.s_comb[i].position, b = r.s_comb[j].position;
     if ((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) > 36.0) return false;  // > 6 m
     los_cells += static_cast<std::size_t>(distance(a, b) / scen().world.resolution()) + 1;
-    return segment_known_free(a, b);
+    return r.own_moves.get(r.map.version(), a, b, [&] { return segment_known_free(a, b); });
   };
   // The same search on a grid of the points (identical result and work count): own_edge is
   // false outside [own_begin, own_end) and beyond 6 m, except between consecutive trail points.

@@ -174,6 +174,25 @@ TEST(NetSim, SameSeedSameResult) {
   EXPECT_EQ(a.route_time_s, b.route_time_s);
 }
 
+// Recordings look at every robot's open points (when the first route arrives, at the end); a look
+// must not add to the robot's work counter (eq. 8-9), or a recorded run (the demo's in-process
+// run) counts more than the same run unrecorded or over DDS.
+TEST(NetSim, LookingAtARobotsOpenPointsAddsNoWork) {
+  const auto sc = corridor();
+  NetSimOptions o;
+  o.method = Method::kDecentralized;
+  BinaryGrid truth = binarize(sc.world);
+  network::SimRadio radio;
+  AgentContext ctx{&sc, &o, &truth, nullptr};
+  RobotAgent agent(ctx, network::RobotId{1}, sc.robots[1], radio);
+  agent.begin();  // senses: its points are stale until it needs them
+  const auto work = agent.report().metrics.work;
+  const auto pts = agent.open_points();
+  EXPECT_FALSE(pts.empty());
+  EXPECT_EQ(agent.report().metrics.work, work);
+  EXPECT_EQ(agent.open_points().size(), pts.size());  // the same points again
+}
+
 class LossyScenario : public ::testing::TestWithParam<std::tuple<int, Method>> {};
 
 TEST_P(LossyScenario, SucceedsWithTwentyPercentLoss) {

@@ -113,8 +113,12 @@ AgentReport RobotAgent::report() const {
   return report_;
 }
 
-std::vector<VoronoiPoint> RobotAgent::open_points() {
-  return points().open;
+std::vector<VoronoiPoint> RobotAgent::open_points() const {
+  // An observer's look (recordings): computed aside when stale, so it neither adds to the robot's
+  // work (eq. 8-9) nor changes when the robot itself recomputes; a recorded run then counts the
+  // same work as an unrecorded one and as the same run over DDS.
+  if (r_.points_dirty) return make_voronoi_points(r_.map.grid(), points_opts()).open;
+  return r_.pts.open;
 }
 
 std::vector<Vec2> RobotAgent::route() const {

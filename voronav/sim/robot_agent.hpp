@@ -29,6 +29,7 @@
 #include "voronav/network/transport.hpp"
 #include "voronav/network/voronoi_points.hpp"
 #include "voronav/sim/netsim.hpp"
+#include "voronav/sim/segment_cache.hpp"
 #include "voronav/sim/world.hpp"
 
 namespace voronav::sim {
@@ -96,7 +97,8 @@ class RobotAgent {
   [[nodiscard]] double first_route_s() const { return report_.route_time_s; }
   [[nodiscard]] AgentReport report() const;
   [[nodiscard]] const LocalMap& local_map() const { return r_.map; }
-  [[nodiscard]] std::vector<network::VoronoiPoint> open_points();
+  /// The robot's open points now (for observers: adds nothing to its work).
+  [[nodiscard]] std::vector<network::VoronoiPoint> open_points() const;
   /// The source's current route [m] (decentralized: route points; centralized: waypoints).
   [[nodiscard]] std::vector<Vec2> route() const;
 
@@ -130,6 +132,7 @@ class RobotAgent {
     network::PointSearch s_search;
     std::size_t s_na = 0;             // number of sender points in s_comb
     std::vector<std::size_t> s_sent;  // sent point index -> s_comb index
+    SegmentCache own_moves;           // try_continue's own-edge checks, until the map changes
     Walk walk = Walk::kIdle;
     double walk_since_check = 0.0;
     double bridge_at = -1.0;  // when to start bridging if no continuable Search came

@@ -44,12 +44,46 @@ void LocalMap::ensure(Cell lo, Cell hi) {
 void LocalMap::set(Cell w, std::int8_t v) {
   ensure(w, w);
   grid_[w - offset_] = v;
+  ++version_;
 }
 
 std::size_t LocalMap::known_cells() const {
   return static_cast<std::size_t>(std::count_if(grid_.values().begin(), grid_.values().end(),
                                                 [](std::int8_t v) { return v != kUnknown; }));
 }
+
+namespace {
+
+/// The cells sense() visits around a robot, relative to its cell: the disc of `rcells` cells and,
+/// for each disc cell, the Bresenham line toward it without its last cell (lines are translation
+/// invariant). Every robot senses every step, so the lines are traced once per range, not per
+/// step (same cells in the same order, so the same answer and work count).
+struct SenseStencil {
+  double rcells = -1.0;
+  std::vector<Cell> disc;
+  std::vector<std::size_t> line_begin;  // per disc cell; one extra entry at the end
+  std::vector<Cell> line;
+};
+
+const SenseStencil& sense_stencil(double rcells) {
+  thread_local SenseStencil st;
+  if (st.rcells == rcells) return st;
+  st = SenseStencil{};
+  st.rcells = rcells;
+  for_each_disc_cell(Cell{0, 0}, rcells, [&](Cell c) {
+    st.disc.push_back(c);
+    st.line_begin.push_back(st.line.size());
+    for_each_line_cell(Cell{0, 0}, c, [&](Cell l) {
+      if (l == c) return false;
+      st.line.push_back(l);
+      return true;
+    });
+  });
+  st.line_begin.push_back(st.line.size());
+  return st;
+}
+
+}  // namespace
 
 SenseResult sense(const BinaryGrid& truth, Vec2 position, double range_m, LocalMap& map) {
   SenseResult out;
@@ -59,26 +93,27 @@ SenseResult sense(const BinaryGrid& truth, Vec2 position, double range_m, LocalM
   const double rcells = range_m / g.resolution;
   const int r = static_cast<int>(std::ceil(rcells));
   map.ensure(*rc - Cell{r, r}, *rc + Cell{r, r});
-  for_each_disc_cell(*rc, rcells, [&](Cell c) {
+  const SenseStencil& st = sense_stencil(rcells);
+  for (std::size_t k = 0; k < st.disc.size(); ++k) {
     ++out.cells;
-    if (!truth.contains(c)) return;
+    const Cell c = *rc + st.disc[k];
+    if (!truth.contains(c)) continue;
+    // The line from the robot's cell to c stays in the box of both, so inside the grid.
     bool visible = true;
-    for_each_line_cell(*rc, c, [&](Cell l) {
-      if (l == c) return false;
+    for (std::size_t i = st.line_begin[k]; i < st.line_begin[k + 1]; ++i) {
       ++out.cells;
-      if (truth[l]) {
+      if (truth[*rc + st.line[i]]) {
         visible = false;
-        return false;
+        break;
       }
-      return true;
-    });
-    if (!visible) return;
+    }
+    if (!visible) continue;
     const std::int8_t v = truth[c] ? kOccupied : kFree;
     if (map.at(c) != v) {
       map.set(c, v);
       out.changed = true;
     }
-  });
+  }
   return out;
 }
 

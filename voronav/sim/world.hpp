@@ -30,9 +30,12 @@ class LocalMap {
   [[nodiscard]] Cell offset() const { return offset_; }
   [[nodiscard]] const GridGeometry& world() const { return world_; }
   [[nodiscard]] std::size_t known_cells() const;
+  /// Changes with every set() (caches of answers computed from the map compare it).
+  [[nodiscard]] std::uint64_t version() const { return version_; }
 
  private:
   GridGeometry world_;
+  std::uint64_t version_ = 0;
   Cell offset_{0, 0};
   OccupancyGrid grid_;
 };

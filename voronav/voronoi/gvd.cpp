@@ -288,22 +288,25 @@ void DynamicGvd::row_lower(int y, int xa, int xb, const std::vector<int>& cols,
                            std::vector<std::size_t>* changed) {
   // Only lowered columns changed in this row: their old sites still exist, so the new nearest
   // site of a cell is the lexicographic minimum of its old one and the changed columns' sites.
-  const auto w = static_cast<std::size_t>(pw_);
+  std::vector<LowerCol>& cs = lower_cols_;
+  cs.clear();
+  for (const int xc : cols) {
+    const std::size_t ci = pidx(xc, y);
+    if (col_d_[ci] < 0) continue;
+    cs.push_back({col_d_[ci], xc, col_arg_[ci], static_cast<std::int32_t>(pidx(xc, col_arg_[ci]))});
+  }
   for (int x = xa; x <= xb; ++x) {
     const std::size_t i = pidx(x, y);
     std::int64_t bd = d2_[i];
     std::int32_t bs = site_[i];
-    for (const int xc : cols) {
-      const std::size_t ci = pidx(xc, y);
-      if (col_d_[ci] < 0) continue;
-      const std::int64_t dd = std::int64_t{x - xc} * (x - xc) + col_d_[ci];
-      const auto s = static_cast<std::int32_t>(pidx(xc, col_arg_[ci]));
+    for (const LowerCol& c : cs) {
+      const std::int64_t dd = std::int64_t{x - c.x} * (x - c.x) + c.d;
       bool better = bd < 0 || dd < bd;
-      if (!better && dd == bd && s != bs) {
-        const auto su = static_cast<std::size_t>(s), bu = static_cast<std::size_t>(bs);
-        better = su % w != bu % w ? su % w < bu % w : su / w < bu / w;
+      if (!better && dd == bd && c.s != bs) {  // ties: the lower column, then the lower row
+        const auto [bx, by] = xy(static_cast<std::size_t>(bs));
+        better = c.x != bx ? c.x < bx : c.sy < by;
       }
-      if (better) bd = dd, bs = s;
+      if (better) bd = dd, bs = c.s;
     }
     if (bd == d2_[i] && bs == site_[i]) continue;
     changed->push_back(i);
@@ -709,6 +712,17 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
       lowered_cols.push_back(std::get<1>(row_cols[a]));  // sorted, distinct
       if (std::get<3>(row_cols[a]) >= 0) old_sites.push_back(std::get<3>(row_cols[a]));
     }
+    // The rows are far apart in memory and the scans below start with reads of the row's
+    // distances and sites around its changed columns: fetch the next row's while this one runs.
+    if (a < row_cols.size()) {
+      const int ny = std::get<0>(row_cols[a]), nx = std::get<1>(row_cols[a]);
+      const std::size_t lo = pidx(std::max(0, nx - 32), ny),
+                        hi = pidx(std::min(pw_ - 1, nx + 32), ny);
+      for (std::size_t i = lo; i <= hi; i += 8)
+        __builtin_prefetch(&d2_[i]);
+      for (std::size_t i = lo; i <= hi; i += 16)
+        __builtin_prefetch(&site_[i]);
+    }
     // The cells that can see column xc (|x - xc|^2 <= d^2) form an interval around it (the
     // distance is 1-Lipschitz). For a run of adjacent columns c0..c1 the union of the intervals
     // is [left end seen from c0, right end seen from c1]: a cell outside the run seen from any
@@ -844,7 +858,12 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     for (std::size_t k = 0; k < prunes_.size(); ++k) {
       deltas =
           prunes_[k].update(thins_[k].out(), deltas, d2_, keys, max_spur(), &stats.skeleton_work);
-      deltas = thins_[k + 1].update(prunes_[k].out(), deltas, d2_, thin_keys, &stats.skeleton_work);
+      // The pruned input is a subset of thins_[k]'s output, a fixed point of the thinning: only
+      // the changes near pruned or removed cells are replayed.
+      deltas = thins_[k + 1].update(prunes_[k].out(), deltas, d2_, thin_keys, &stats.skeleton_work,
+                                    &thins_[k].out());
+      stats.rethin_dormant += thins_[k + 1].last_dormant();
+      stats.rethin_woken += thins_[k + 1].last_woken();
     }
   }
   stats.changed_diagram = deltas.size();

@@ -41,6 +41,9 @@
 //    subfield-parallel thinning automaton whose whole run is stored, and spur pruning of all ends
 //    at once), replayed only where their input or the clearance changed (for the thinning, which
 //    compares the clearances of 8-neighbours only: where the order of two raw neighbours flipped).
+//    The re-thinning after a pruning round starts from the output of a thinning, a fixed point
+//    in which no cell is removable, so it replays only the changes within 2 cells of a pruned
+//    or removed cell (the others stay dormant unless a removal comes near them).
 // The result is identical to a full rebuild (tested on random change sequences with merges and
 // splits), and the cost follows the size of the change, not of the map.
 #pragma once
@@ -124,8 +127,13 @@ struct GvdUpdateStats {
   std::size_t key_changes = 0;        ///< raw cells whose clearance changed (read by the pruning)
   std::size_t thin_key_changes = 0;   ///< ... of which flip the order of two raw neighbours
   std::size_t skeleton_work = 0;      ///< cells the local re-thinning and re-pruning examined
-  std::size_t changed_diagram = 0;    ///< cells of the final diagram that changed
-  int thinning_steps = 0;             ///< steps of the longest stored thinning run
+  /// Changes and key changes that the re-thinnings after the pruning rounds left dormant (too
+  /// far from every pruned or removed cell to change a decision), and those of them woken up
+  /// again because the replay removed a cell nearby.
+  std::size_t rethin_dormant = 0;
+  std::size_t rethin_woken = 0;
+  std::size_t changed_diagram = 0;  ///< cells of the final diagram that changed
+  int thinning_steps = 0;           ///< steps of the longest stored thinning run
 };
 
 class DynamicGvd {
@@ -216,6 +224,13 @@ class DynamicGvd {
   std::vector<std::uint8_t> mark_;        // scratch marks (0)
   std::vector<std::uint8_t> d2_changed_;  // scratch of update(): the distance changed (0)
   std::vector<std::int64_t> old_d2_;      // scratch of update(): d2 before it changed
+  struct LowerCol {                       // scratch of row_lower(): a changed column's site
+    std::int64_t d;                       // squared vertical distance of the site
+    int x;                                // column
+    std::int32_t sy;                      // row of the site
+    std::int32_t s;                       // padded index of the site
+  };
+  std::vector<LowerCol> lower_cols_;
   std::vector<std::uint8_t> raw_;
   std::vector<internal::ParallelThinning> thins_;  // thin, then (prune, thin) per round
   std::vector<internal::ParallelPruning> prunes_;

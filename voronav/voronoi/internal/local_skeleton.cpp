@@ -37,7 +37,7 @@ bool ParallelThinning::removable(const std::vector<std::uint8_t>& in, std::size_
   int deg = 0;
   for (int k = 0; k < 8; ++k) {
     const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + r_.offset(k));
-    nb[k] = in[j] && removed_at_[j] >= t ? 1 : 0;
+    nb[k] = in[j] && removed_at(j) >= t ? 1 : 0;
     deg += nb[k];
   }
   if (deg < 2) return false;  // end points and isolated cells stay
@@ -68,9 +68,7 @@ void ParallelThinning::build(const std::vector<std::uint8_t>& in,
                              const std::vector<std::int64_t>& key) {
   key_ = &key;
   const std::size_t n = in.size();
-  removed_at_.assign(n, kNever);
-  rec_of_.clear();  // the scratch of update() is allocated by the first update
-  seen_.clear();
+  cells_.reset(n);  // all kept, no record, not seen (zero pages: untouched cells cost nothing)
   epoch_ = 0;
   const auto [lo, hi] = set_range(in);  // sparse maps: only the range of the set is scanned
   std::vector<std::size_t> lists[4];
@@ -81,14 +79,14 @@ void ParallelThinning::build(const std::vector<std::uint8_t>& in,
     bool removed = false;
     auto& list = lists[t & 3];
     for (const std::size_t c : list) {
-      if (removed_at_[c] != kNever || !removable(in, c, t)) continue;
-      removed_at_[c] = t;
+      if (removed_at(c) != kNever || !removable(in, c, t)) continue;
+      set_removed(c, t);
       removed = true;
     }
     if (removed) {
       quiet = 0;
       last = t;
-      std::erase_if(list, [&](std::size_t c) { return removed_at_[c] != kNever; });
+      std::erase_if(list, [&](std::size_t c) { return removed_at(c) != kNever; });
     } else if (++quiet >= 4) {
       break;
     }
@@ -96,95 +94,213 @@ void ParallelThinning::build(const std::vector<std::uint8_t>& in,
   steps_ = last + 1;
   out_.assign(n, 0);
   for (std::size_t c = lo; c < hi; ++c)
-    out_[c] = in[c] && removed_at_[c] == kNever ? 1 : 0;
+    out_[c] = in[c] && removed_at(c) == kNever ? 1 : 0;
 }
 
 std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
                                             const std::vector<Delta>& in_changes,
                                             const std::vector<std::int64_t>& key,
                                             const std::vector<std::size_t>& key_changes,
-                                            std::size_t* work) {
+                                            std::size_t* work,
+                                            const std::vector<std::uint8_t>* fixed_point) {
   key_ = &key;
-  if (rec_of_.size() != in.size()) {
-    rec_of_.assign(in.size(), -1);
-    seen_.assign(in.size(), 0);
-    epoch_ = 0;
-  }
   const auto w = static_cast<std::ptrdiff_t>(r_.width);
+  const auto h = static_cast<std::ptrdiff_t>(r_.height);
   const auto uw = static_cast<std::size_t>(r_.width);
   std::vector<Rec>& recs = recs_;
   recs.clear();
+  // Records whose old and new alive intervals may still differ at the current step or later
+  // (indices into recs); a record leaves when both runs agree from then on and comes back when
+  // its removal step changes.
+  std::vector<std::uint32_t>& active = active_;
+  active.clear();
   // The records mirror the new state of their cells (new_in, new_removed_at), so the scan of
   // the records at every step reads no per-cell array.
   auto touch = [&](std::size_t c, std::uint8_t old_in) -> Rec& {
-    if (rec_of_[c] >= 0) return recs[static_cast<std::size_t>(rec_of_[c])];
-    rec_of_[c] = static_cast<std::int32_t>(recs.size());
-    recs.push_back({c, old_in, in[c], removed_at_[c], removed_at_[c],
-                    static_cast<std::int32_t>(c % uw), static_cast<std::int32_t>(c / uw)});
+    CellState& cc = cells_[c];
+    if (cc.rec & kRecIndex) return recs[(cc.rec & kRecIndex) - 1];
+    cc.rec = (cc.rec & ~kRecIndex) | (static_cast<std::uint32_t>(recs.size()) + 1);
+    recs.push_back({c, old_in, in[c], removed_at(c), removed_at(c),
+                    static_cast<std::int32_t>(c % uw), static_cast<std::int32_t>(c / uw), false});
     return recs.back();
   };
-  auto set_removed_at = [&](std::size_t c, std::int32_t t) {
-    touch(c, in[c]).new_removed_at = t;
-    removed_at_[c] = t;
+  int last_change = -1;  // the step of the latest change of the replay's inputs (-1: before)
+  int step = -1;
+  std::vector<Rec>& perm = perm_;
+  perm.clear();
+  auto activate = [&](std::size_t c) {
+    Rec& rec = recs[(cells_[c].rec & kRecIndex) - 1];
+    if (!rec.active) {
+      rec.active = true;
+      active.push_back((cells_[c].rec & kRecIndex) - 1);
+    }
   };
-  for (const Delta& d : in_changes) {
+  // The cells within 2 of c (clamped to the raster).
+  auto around2 = [&](std::size_t c, auto&& f) {
+    const auto x = static_cast<std::ptrdiff_t>(c % uw), y = static_cast<std::ptrdiff_t>(c / uw);
+    const std::ptrdiff_t x0 = std::max<std::ptrdiff_t>(0, x - 2), x1 = std::min(w - 1, x + 2);
+    for (std::ptrdiff_t yy = std::max<std::ptrdiff_t>(0, y - 2); yy <= std::min(h - 1, y + 2); ++yy)
+      for (std::ptrdiff_t xx = x0; xx <= x1; ++xx)
+        if (f(static_cast<std::size_t>(yy * w + xx))) return true;
+    return false;
+  };
+  // Dormant changes (see fixed_point in the header) wake up when the replay removes a cell
+  // within 2 of them: from the next step on the cells between may see a dead cell of the
+  // fixed point.
+  std::size_t dormant = 0;
+  last_woken_ = 0;
+  auto wake_around = [&](std::size_t c) {
+    around2(c, [&](std::size_t y) {
+      std::uint32_t& r = cells_[y].rec;
+      if (r & kDormantChange) {
+        r &= ~kDormantChange;
+        --dormant;
+        ++last_woken_;
+        touch(y, in[y] ? 0 : 1);
+        activate(y);
+        last_change = step;
+      }
+      if (r & kDormantKey) {
+        r &= ~kDormantKey;
+        --dormant;
+        ++last_woken_;
+        if (in[y])
+          perm.push_back({y, 1, 1, 0, 0, static_cast<std::int32_t>(y % uw),
+                          static_cast<std::int32_t>(y / uw), false});
+        last_change = step;
+      }
+      return false;
+    });
+  };
+  auto set_removed_at = [&](std::size_t c, std::int32_t t) {
+    last_change = step;
+    Rec& rec = touch(c, in[c]);
+    rec.new_removed_at = t;
+    set_removed(c, t);
+    activate(c);
+    if (dormant > 0 && t != kNever) wake_around(c);
+  };
+  // With a fixed point F of the input: a change or key change matters only within 2 of a cell
+  // of F that is dead at some step, in the stored run (removed there) or the new one (not in
+  // the input, or removed by the replay); the others start dormant. Decided before any removal
+  // step is reset.
+  std::vector<std::uint8_t>& relevant = relevant_;
+  relevant.clear();
+  if (fixed_point) {
+    const std::vector<std::uint8_t>& f = *fixed_point;
+    auto hot = [&](std::size_t c) {
+      return around2(c, [&](std::size_t y) { return (f[y] && !in[y]) || cells_[y].removed != 0; });
+    };
+    for (const Delta& d : in_changes)
+      relevant.push_back(hot(d.cell) ? 1 : 0);
+    for (const std::size_t k : key_changes)
+      relevant.push_back(!in[k] || hot(k) ? 1 : 0);
+  }
+  for (std::size_t i = 0; i < in_changes.size(); ++i) {
+    const Delta& d = in_changes[i];
+    if (!relevant.empty() && !relevant[i]) {
+      if (!(cells_[d.cell].rec & kDormantChange)) ++dormant;
+      cells_[d.cell].rec |= kDormantChange;
+      continue;
+    }
     touch(d.cell, d.old_value);
     set_removed_at(d.cell, kNever);  // decided again below
   }
   // Cells of the set whose key changed: dirty at every step while they are alive (the key of a
   // dead cell is never read again, so it leaves the list).
-  std::vector<Rec>& perm = perm_;
-  perm.clear();
-  for (const std::size_t k : key_changes)
-    if (in[k]) {
-      perm.push_back(
-          {k, 1, 1, 0, 0, static_cast<std::int32_t>(k % uw), static_cast<std::int32_t>(k / uw)});
+  for (std::size_t i = 0; i < key_changes.size(); ++i) {
+    const std::size_t k = key_changes[i];
+    if (!in[k]) continue;
+    if (!relevant.empty() && !relevant[in_changes.size() + i]) {
+      if (!(cells_[k].rec & kDormantKey)) ++dormant;
+      cells_[k].rec |= kDormantKey;
+      continue;
     }
+    perm.push_back({k, 1, 1, 0, 0, static_cast<std::int32_t>(k % uw),
+                    static_cast<std::int32_t>(k / uw), false});
+  }
 
   std::vector<std::size_t>& cand = cand_;
   const int old_steps = steps_;
   int quiet = 0, last = -1;
+  for (auto& sc : cache_)
+    sc.t0 = -1;
   for (int t = 0;; ++t) {
-    if (++epoch_ == 0) {
-      std::fill(seen_.begin(), seen_.end(), 0U);
-      epoch_ = 1;
-    }
+    step = t;
     const int sf = t & 3;
-    cand.clear();
-    // The cells of the current subfield in the 3x3 neighbourhood of c (at x, y).
-    auto add_around = [&](std::size_t c, std::int32_t cx, std::int32_t cy) {
-      const std::ptrdiff_t fx = (cx & 1) == (sf & 1) ? 0 : -1;
-      const std::ptrdiff_t fy = (cy & 1) == ((sf >> 1) & 1) ? 0 : -1;
-      for (std::ptrdiff_t dy = fy; dy <= 1; dy += 2)
-        for (std::ptrdiff_t dx = fx; dx <= 1; dx += 2) {
-          const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + dy * w + dx);
-          if (!in[j] || seen_[j] == epoch_) continue;
-          seen_[j] = epoch_;
-          cand.push_back(j);
-        }
-    };
+    std::erase_if(perm, [&](const Rec& p) { return removed_at(p.cell) < t; });
+    // The candidates of this subfield are those of four steps ago when nothing changed since:
+    // no removal step was set again, no record crossed the end of its differing interval and
+    // no key-changed cell died (late steps, where the run is quiet, reuse the list).
+    SubfieldCache& sc = cache_[static_cast<std::size_t>(sf)];
     bool any_diff = false;
-    const std::size_t nrec = recs.size();
-    for (std::size_t k = 0; k < nrec; ++k) {
-      const Rec& rec = recs[k];
-      const bool old_alive = rec.old_in && rec.old_removed_at >= t;
-      const bool new_alive = rec.new_in && rec.new_removed_at >= t;
-      if (old_alive == new_alive) continue;
-      any_diff = true;
-      add_around(rec.cell, rec.x, rec.y);
+    if (sc.t0 == t - 4 && last_change < sc.t0 && t < sc.valid_until &&
+        perm.size() == sc.perm_size) {
+      any_diff = sc.any_diff;
+      cand.assign(sc.cand.begin(), sc.cand.end());
+      sc.t0 = t;
+    } else {
+      if (++epoch_ == 0) {
+        for (std::size_t c = 0; c < cells_.size(); ++c)
+          cells_[c].seen = 0;
+        epoch_ = 1;
+      }
+      cand.clear();
+      // The cells of the current subfield in the 3x3 neighbourhood of c (at x, y).
+      auto add_around = [&](std::size_t c, std::int32_t cx, std::int32_t cy) {
+        const std::ptrdiff_t fx = (cx & 1) == (sf & 1) ? 0 : -1;
+        const std::ptrdiff_t fy = (cy & 1) == ((sf >> 1) & 1) ? 0 : -1;
+        for (std::ptrdiff_t dy = fy; dy <= 1; dy += 2)
+          for (std::ptrdiff_t dx = fx; dx <= 1; dx += 2) {
+            const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + dy * w + dx);
+            if (!in[j] || cells_[j].seen == epoch_) continue;
+            cells_[j].seen = epoch_;
+            cand.push_back(j);
+          }
+      };
+      // A record's cell is alive up to step oa in the stored run and na in the new one (-1:
+      // never alive); the two differ at the steps t with min < t <= max.
+      std::size_t kept = 0;
+      int valid_until = kNever;  // the first later step at which a record's difference flips
+      for (const std::uint32_t k : active) {
+        Rec& rec = recs[k];
+        const std::int32_t oa = rec.old_in ? rec.old_removed_at : -1;
+        const std::int32_t na = rec.new_in ? rec.new_removed_at : -1;
+        const std::int32_t lo = std::min(oa, na), hi = std::max(oa, na);
+        if (lo == hi || hi < t) {  // equal from here on (until the removal step changes again)
+          rec.active = false;
+          continue;
+        }
+        active[kept++] = k;
+        if (lo >= t) {
+          valid_until = std::min(valid_until, lo + 1);
+          continue;
+        }
+        if (hi < kNever) valid_until = std::min(valid_until, hi + 1);
+        any_diff = true;
+        add_around(rec.cell, rec.x, rec.y);
+      }
+      active.resize(kept);
+      if (any_diff || !perm.empty()) {
+        for (const Rec& p : perm)
+          add_around(p.cell, p.x, p.y);
+        sc.t0 = t;
+        sc.valid_until = valid_until;
+        sc.perm_size = perm.size();
+        sc.any_diff = any_diff;
+        sc.cand.assign(cand.begin(), cand.end());
+      }
     }
-    std::erase_if(perm, [&](const Rec& p) { return removed_at_[p.cell] < t; });
     if (!any_diff && perm.empty()) break;  // the same state as the stored run from here on
-    for (const Rec& p : perm)
-      add_around(p.cell, p.x, p.y);
     bool removed = false;
     for (const std::size_t c : cand) {
-      if (removed_at_[c] < t) continue;
+      const std::int32_t at = removed_at(c);
+      if (at < t) continue;
       if (work) ++*work;
       if (removable(in, c, t)) {
         removed = true;
-        if (removed_at_[c] != t) set_removed_at(c, t);
-      } else if (removed_at_[c] == t) {
+        if (at != t) set_removed_at(c, t);
+      } else if (at == t) {
         set_removed_at(c, kNever);
       }
     }
@@ -198,11 +314,24 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
     if (quiet >= 4 && t - 3 >= old_steps) break;
   }
   steps_ = std::max(old_steps, last + 1);
+  last_dormant_ = dormant + last_woken_;
   std::vector<Delta> out;
+  if (dormant > 0) {
+    // Still dormant: kept in both runs; the output follows the input there.
+    for (const Delta& d : in_changes) {
+      std::uint32_t& r = cells_[d.cell].rec;
+      if (!(r & kDormantChange)) continue;
+      r &= ~kDormantChange;
+      out_[d.cell] = in[d.cell];
+      out.push_back({d.cell, d.old_value});
+    }
+    for (const std::size_t k : key_changes)
+      cells_[k].rec &= ~kDormantKey;
+  }
   for (const Rec& rec : recs) {
-    rec_of_[rec.cell] = -1;
+    cells_[rec.cell].rec = 0;
     const std::uint8_t was = rec.old_in && rec.old_removed_at == kNever ? 1 : 0;
-    const std::uint8_t now = in[rec.cell] && removed_at_[rec.cell] == kNever ? 1 : 0;
+    const std::uint8_t now = in[rec.cell] && removed_at(rec.cell) == kNever ? 1 : 0;
     if (was == now) continue;
     out_[rec.cell] = now;
     out.push_back({rec.cell, was});
@@ -247,9 +376,7 @@ void ParallelPruning::build(const std::vector<std::uint8_t>& in,
                             const std::vector<std::int64_t>& d2, double max_len) {
   d2_ = &d2;
   const std::size_t n = in.size();
-  owner_.assign(n, -1);
-  seen_.clear();  // allocated by the first update
-  near_.clear();
+  slots_.reset(n);  // no owner, not seen
   epoch_ = 0;
   spurs_.clear();
   std::vector<std::size_t> path;
@@ -257,12 +384,12 @@ void ParallelPruning::build(const std::vector<std::uint8_t>& in,
   for (std::size_t c = lo; c < hi; ++c) {
     if (!in[c] || skeleton_degree(in, r_, c) != 1 || !walk(in, c, max_len, path)) continue;
     for (const std::size_t p : path)
-      owner_[p] = static_cast<std::int32_t>(c);
+      set_owner(p, c);
     spurs_.emplace(c, path);
   }
   out_.assign(n, 0);
   for (std::size_t c = lo; c < hi; ++c)
-    out_[c] = in[c] && owner_[c] < 0 ? 1 : 0;
+    out_[c] = in[c] && owner(c) < 0 ? 1 : 0;
 }
 
 std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
@@ -271,11 +398,6 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
                                            const std::vector<std::size_t>& key_changes,
                                            double max_len, std::size_t* work) {
   d2_ = &d2;
-  if (seen_.size() != in.size()) {
-    seen_.assign(in.size(), 0);
-    near_.assign(in.size(), 0);
-    epoch_ = 0;
-  }
   std::vector<std::size_t>& dirty = dirty_;  // scratch vectors keep their capacity
   dirty.clear();
   for (const Delta& d : in_changes)
@@ -289,18 +411,14 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   // their 3x3 neighbourhoods; the junction touches the path).
   auto around = [&](std::size_t c, auto&& f) {
     const auto x = static_cast<std::ptrdiff_t>(c) % w, y = static_cast<std::ptrdiff_t>(c) / w;
+    const std::ptrdiff_t x0 = std::max<std::ptrdiff_t>(0, x - 2), x1 = std::min(w - 1, x + 2);
     for (std::ptrdiff_t yy = std::max<std::ptrdiff_t>(0, y - 2); yy <= std::min(h - 1, y + 2); ++yy)
-      for (std::ptrdiff_t xx = std::max<std::ptrdiff_t>(0, x - 2); xx <= std::min(w - 1, x + 2);
-           ++xx)
+      for (std::ptrdiff_t xx = x0; xx <= x1; ++xx)
         f(static_cast<std::size_t>(yy * w + xx));
   };
-  // 1. Undo the stored spurs that pass near a dirty cell, and 2. collect the set cells near the
-  // dirty ones (one pass over the 5x5 neighbourhoods): the ends whose spur may pass near a dirty
-  // cell now are found by walking out from them through cells of at most two neighbours, no
-  // farther than the longest spur.
   if (++epoch_ == 0) {
-    std::fill(seen_.begin(), seen_.end(), 0U);
-    std::fill(near_.begin(), near_.end(), 0U);
+    for (std::size_t c = 0; c < slots_.size(); ++c)
+      slots_[c].seen = 0;
     epoch_ = 1;
   }
   std::vector<std::size_t>&touched = touched_, &candidates = candidates_;
@@ -308,22 +426,34 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   touched.clear();
   candidates.clear();
   queue.clear();
+  // Undoes the stored spur through c, if any (its end is walked again below).
+  auto undo = [&](std::size_t c) {
+    if (owner(c) < 0) return;
+    const auto e = static_cast<std::size_t>(owner(c));
+    const auto it = spurs_.find(e);
+    for (const std::size_t p : it->second) {
+      slots_[p].owner = 0;
+      touched.push_back(p);
+    }
+    spurs_.erase(it);
+    candidates.push_back(e);
+  };
+  // 1. Undo the stored spurs that pass near a dirty cell, and 2. collect the set cells near the
+  // dirty ones (one pass over the 5x5 neighbourhoods): the ends whose spur may pass near a dirty
+  // cell now are found by walking out from them through cells of at most two neighbours, no
+  // farther than the longest spur. Stored spurs lie on cells of the old input: a cell near a
+  // dirty one that is not in the input now was not in it before either, unless it changed
+  // itself (those are undone first), so only the cells of the input are looked at (the per-cell
+  // slots are read for the few skeleton cells of each window, not for all 25 cells).
+  for (const Delta& d : in_changes)
+    if (d.old_value) undo(d.cell);
   for (const std::size_t d : dirty)
     around(d, [&](std::size_t c) {
-      if (near_[c] == epoch_) return;  // the neighbourhoods of nearby dirty cells overlap
-      near_[c] = epoch_;
-      if (owner_[c] >= 0) {
-        const auto e = static_cast<std::size_t>(owner_[c]);
-        const auto it = spurs_.find(e);
-        for (const std::size_t p : it->second) {
-          owner_[p] = -1;
-          touched.push_back(p);
-        }
-        spurs_.erase(it);
-        candidates.push_back(e);
-      }
-      if (!in[c] || seen_[c] == epoch_) return;
-      seen_[c] = epoch_;
+      if (!in[c]) return;
+      Slot& s = slots_[c];
+      if (s.seen == epoch_) return;  // the neighbourhoods of nearby dirty cells overlap
+      s.seen = epoch_;
+      undo(c);
       queue.emplace_back(c, 0);
     });
   const int max_depth = static_cast<int>(std::ceil(max_len)) + 3;
@@ -335,8 +465,8 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
     if ((deg >= 3 && depth > 0) || depth >= max_depth) continue;
     for (int k = 0; k < 8; ++k) {
       const auto j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + r_.offset(k));
-      if (!in[j] || seen_[j] == epoch_) continue;
-      seen_[j] = epoch_;
+      if (!in[j] || slots_[j].seen == epoch_) continue;
+      slots_[j].seen = epoch_;
       queue.emplace_back(j, depth + 1);
     }
   }
@@ -344,10 +474,10 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   std::vector<std::size_t>& path = path_;
   for (const std::size_t e : candidates) {
-    if (!in[e] || owner_[e] >= 0 || skeleton_degree(in, r_, e) != 1) continue;
+    if (!in[e] || owner(e) >= 0 || skeleton_degree(in, r_, e) != 1) continue;
     if (!walk(in, e, max_len, path)) continue;
     for (const std::size_t p : path) {
-      owner_[p] = static_cast<std::int32_t>(e);
+      set_owner(p, e);
       touched.push_back(p);
     }
     spurs_.emplace(e, path);
@@ -357,7 +487,7 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   // A cell listed twice is equal to out_ the second time (no sort needed).
   std::vector<Delta> out;
   for (const std::size_t c : touched) {
-    const std::uint8_t now = in[c] && owner_[c] < 0 ? 1 : 0;
+    const std::uint8_t now = in[c] && owner(c) < 0 ? 1 : 0;
     if (now == out_[c]) continue;
     out.push_back({c, out_[c]});
     out_[c] = now;

@@ -26,6 +26,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <new>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -33,6 +38,47 @@
 #include "voronav/voronoi/internal/skeleton.hpp"
 
 namespace voronav::voronoi::internal {
+
+/// A per-cell array of a trivial type, all bytes zero at the start. It is allocated with calloc,
+/// so a large array gets fresh zero pages from the system: the cells a run never touches cost
+/// no time (a std::vector would write every cell). Copies copy the contents.
+template <class T>
+class ZeroedArray {
+  static_assert(std::is_trivially_copyable_v<T>);
+
+ public:
+  ZeroedArray() = default;
+  ZeroedArray(const ZeroedArray& o) { copy_from(o); }
+  ZeroedArray& operator=(const ZeroedArray& o) {
+    if (this != &o) copy_from(o);
+    return *this;
+  }
+  ZeroedArray(ZeroedArray&&) noexcept = default;
+  ZeroedArray& operator=(ZeroedArray&&) noexcept = default;
+  /// n cells, all zero (the old contents are dropped).
+  void reset(std::size_t n) {
+    data_.reset();
+    size_ = 0;
+    if (n == 0) return;
+    data_.reset(static_cast<T*>(std::calloc(n, sizeof(T))));
+    if (!data_) throw std::bad_alloc();
+    size_ = n;
+  }
+  [[nodiscard]] std::size_t size() const { return size_; }
+  T& operator[](std::size_t i) { return data_[i]; }
+  const T& operator[](std::size_t i) const { return data_[i]; }
+
+ private:
+  struct Free {
+    void operator()(T* p) const { std::free(p); }
+  };
+  void copy_from(const ZeroedArray& o) {
+    reset(o.size_);
+    if (size_ > 0) std::memcpy(data_.get(), o.data_.get(), size_ * sizeof(T));
+  }
+  std::unique_ptr<T[], Free> data_;
+  std::size_t size_ = 0;
+};
 
 /// A cell whose value changed, with its value before the change.
 struct Delta {
@@ -48,17 +94,31 @@ class ParallelThinning {
   void build(const std::vector<std::uint8_t>& in, const std::vector<std::int64_t>& key);
   /// `in` has already changed at in_changes (with their old values); key_changes lists the cells
   /// whose key changed. Returns the output cells that changed (with their old values).
+  /// fixed_point (optional): a superset F of `in` in which no cell is removable (the output of
+  /// a thinning with the same keys, of which `in` is a pruned subset). A cell can then only be
+  /// removed when a cell of F in its 3x3 neighbourhood is dead (not in `in`, or removed
+  /// before), so the changes farther than 2 cells from every such cell, in the stored run and
+  /// in the new one, cannot change any decision: they are not replayed (the re-thinning after a
+  /// pruning round then costs what the pruning changed, not what the first thinning changed).
   std::vector<Delta> update(const std::vector<std::uint8_t>& in,
                             const std::vector<Delta>& in_changes,
                             const std::vector<std::int64_t>& key,
-                            const std::vector<std::size_t>& key_changes, std::size_t* work);
+                            const std::vector<std::size_t>& key_changes, std::size_t* work,
+                            const std::vector<std::uint8_t>* fixed_point = nullptr);
   [[nodiscard]] const std::vector<std::uint8_t>& out() const { return out_; }
+  /// Of the last update with a fixed point: the changes and key changes that started dormant,
+  /// and those of them that a removal nearby woke up (replayed after all).
+  [[nodiscard]] std::size_t last_dormant() const { return last_dormant_; }
+  [[nodiscard]] std::size_t last_woken() const { return last_woken_; }
   /// Steps of the stored run (>= 1 + its last removal step).
   [[nodiscard]] int steps() const { return steps_; }
 
  private:
   static constexpr std::int32_t kNever = 0x7fffffff;
   [[nodiscard]] bool removable(const std::vector<std::uint8_t>& in, std::size_t c, int t) const;
+  // Removal step of cell c (kNever: kept), stored as kNever - step so that 0 means kept.
+  [[nodiscard]] std::int32_t removed_at(std::size_t c) const { return kNever - cells_[c].removed; }
+  void set_removed(std::size_t c, std::int32_t t) { cells_[c].removed = kNever - t; }
   [[nodiscard]] bool key_less(std::size_t a, std::size_t b) const {
     const std::int64_t ka = (*key_)[a], kb = (*key_)[b];
     return ka != kb ? ka < kb : a < b;
@@ -71,19 +131,45 @@ class ParallelThinning {
   PaddedRaster r_;
   const std::vector<std::int64_t>* key_ = nullptr;  // set for the duration of build/update
   std::vector<std::uint8_t> out_;
-  std::vector<std::int32_t> removed_at_;  // step at which the cell was removed (kNever: kept)
-  int steps_ = 0;                         // >= 1 + the last step that removed a cell
+  int steps_ = 0;  // >= 1 + the last step that removed a cell
+  std::size_t last_dormant_ = 0, last_woken_ = 0;
+  // Per cell, side by side so that a replay, which visits scattered cells, reads one cache line
+  // per cell instead of three: the step of the stored run that removed it (kNever - step; 0 =
+  // kept), its record in the current update (index + 1; 0 = none) and the scratch mark of the
+  // current step (epoch; 0 = never). All zero at the start: the array is allocated zeroed.
+  // rec also holds two flags of update(): a dormant change and a dormant key change.
+  struct CellState {
+    std::int32_t removed;
+    std::uint32_t rec;
+    std::uint32_t seen;
+  };
+  static constexpr std::uint32_t kRecIndex = 0x3fffffffU;
+  static constexpr std::uint32_t kDormantChange = 0x80000000U;
+  static constexpr std::uint32_t kDormantKey = 0x40000000U;
+  ZeroedArray<CellState> cells_;
   // Scratch for update().
   struct Rec {
     std::size_t cell;
     std::uint8_t old_in, new_in;
     std::int32_t old_removed_at, new_removed_at;
     std::int32_t x, y;  // coordinates (no division in the step loop)
+    bool active;        // listed in active_
   };
   std::vector<Rec> recs_, perm_;
+  std::vector<std::uint32_t> active_;
+  std::vector<std::uint8_t> relevant_;
   std::vector<std::size_t> cand_;
-  std::vector<std::int32_t> rec_of_;
-  std::vector<std::uint32_t> seen_;
+  // The candidates of each subfield at its latest step t0, reusable four steps later while no
+  // removal step changed, no record's difference flips (valid_until) and no key-changed cell
+  // died (perm_size).
+  struct SubfieldCache {
+    int t0 = -1;
+    int valid_until = 0;
+    std::size_t perm_size = 0;
+    bool any_diff = false;
+    std::vector<std::size_t> cand;
+  };
+  SubfieldCache cache_[4];
   std::uint32_t epoch_ = 0;
 };
 
@@ -114,11 +200,22 @@ class ParallelPruning {
   double min_cells_ = 0.0;
   double ratio_ = 0.0;
   std::vector<std::uint8_t> out_;
-  std::vector<std::int32_t> owner_;  // end of the pruned spur through the cell (-1 none)
+  // Per cell, side by side (one cache line per look, not two): the end of the pruned spur
+  // through it (index + 1; 0 = none) and the scratch mark of update() (queued in the current
+  // epoch; 0 = never). All zero at the start: the array is allocated zeroed.
+  struct Slot {
+    std::uint32_t owner;
+    std::uint32_t seen;
+  };
+  ZeroedArray<Slot> slots_;
+  [[nodiscard]] std::int64_t owner(std::size_t c) const {
+    return static_cast<std::int64_t>(slots_[c].owner) - 1;
+  }
+  void set_owner(std::size_t c, std::size_t end) {
+    slots_[c].owner = static_cast<std::uint32_t>(end) + 1;
+  }
   std::unordered_map<std::size_t, std::vector<std::size_t>> spurs_;  // end -> removed path
-  std::vector<std::uint32_t> seen_;  // scratch of update(): queued cells
-  std::vector<std::uint32_t> near_;  // scratch of update(): cells near a dirty one, visited
-  std::vector<std::size_t> dirty_, touched_, candidates_, path_;  // scratch of update()
+  std::vector<std::size_t> dirty_, touched_, candidates_, path_;     // scratch of update()
   std::vector<std::pair<std::size_t, int>> queue_;
   std::uint32_t epoch_ = 0;
 };
