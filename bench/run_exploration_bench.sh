@@ -2,7 +2,7 @@
 # Multi-seed exploration bench (seed 004's Voronoi tree vs frontier baselines): SEEDS seeds per
 # (world, robots, method); mean ± sd of t90, t99, final coverage, distance, collisions and stalled
 # robots; a coverage-over-time plot (mean with a ±1 sd band per method) per world.
-# Writes bench/results/exploration.md, exploration_runs.json (raw) and img/exploration_*.png.
+# Writes bench/results/$OUT.md, ${OUT}_runs.json (raw) and img/${OUT}_<map>_<n>robots.png.
 # Usage: bench/run_exploration_bench.sh [build-dir]   (default build/default)
 # Environment (defaults = the full job, hours on 2 cores):
 #   MAPS     space-separated map paths or 'paper'   (paper, depot, turtlebot3_world, lab_intel floor plan)
@@ -128,7 +128,7 @@ for m in dict.fromkeys(r["map"] for r in rows):
             ax.set_xlabel("simulated time [s]"); ax.set_ylabel("coverage [%]")
             ax.set_title(f"{m}, {n} robots: mean ± 1 sd over {seeds} seeds"); ax.grid(alpha=0.3)
             ax.legend(fontsize=8)
-            png = f"img/exploration_{m}_{n}robots.png"
+            png = f"img/{outname}_{m}_{n}robots.png"
             fig.tight_layout(); fig.savefig(os.path.join(root, "bench/results", png), dpi=90)
             plt.close(fig)
             out += [f"![{m}, {n} robots]({png})", ""]

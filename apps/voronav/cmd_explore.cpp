@@ -27,6 +27,9 @@ struct ExploreArgs {
   double tree_start = 400.0;
   double min_leaf_gain = 0.15;
   std::string tree_replan = "none";
+  std::string tree_leg_replan = "robots";
+  std::string avoid_escape = "corridor";
+  double random_turn_rate = 0.0;
   std::uint64_t seed = 1;
   std::string start;
   std::filesystem::path out;
@@ -100,9 +103,17 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                            const exploration::ExplorationResult& r) {
   j["frame_id"] = "map";
   j["units"] = {{"time", "s"}, {"length", "m"}, {"coverage", "fraction"}, {"yaw", "rad"}};
-  j["input"] = {{"map", a.world},   {"robots", a.robots},           {"method", a.method},
-                {"time_s", a.time}, {"tree_start_s", a.tree_start}, {"tree_replan", a.tree_replan},
-                {"seed", a.seed},   {"stop_at_coverage", a.stop_at}};
+  j["input"] = {{"map", a.world},
+                {"robots", a.robots},
+                {"method", a.method},
+                {"time_s", a.time},
+                {"tree_start_s", a.tree_start},
+                {"tree_replan", a.tree_replan},
+                {"tree_leg_replan", a.tree_leg_replan},
+                {"avoid_escape", a.avoid_escape},
+                {"random_turn_rate", a.random_turn_rate},
+                {"seed", a.seed},
+                {"stop_at_coverage", a.stop_at}};
   if (!a.start.empty()) {
     const Vec2 s = parse_point(a.start, "--start");
     j["input"]["start"] = {s.x, s.y};
@@ -133,6 +144,9 @@ void run(const ExploreArgs& a) {
   o.tree_start_time = a.tree_start;
   o.min_leaf_gain = a.min_leaf_gain;
   o.tree_replan = exploration::parse_tree_replan(a.tree_replan);
+  o.tree_leg_replan = exploration::parse_tree_leg_replan(a.tree_leg_replan);
+  o.controller.avoid_escape = robot::parse_avoid_escape(a.avoid_escape);
+  o.controller.random_turn_rate = a.random_turn_rate;
   o.seed = a.seed;
   o.stop_at_coverage = a.stop_at;
   if (!a.start.empty())
@@ -211,6 +225,22 @@ void setup(CLI::App& app) {
   cmd->add_option("--tree-replan", args->tree_replan,
                   "tree: after its leaves a robot searches reactively (none, the paper) or gets a "
                   "new tree rooted where it is (robots)")
+      ->capture_default_str();
+  cmd->add_option("--tree-leg-replan", args->tree_leg_replan,
+                  "tree: a robot blocked on a tree leg skips a waypoint (none) or re-plans the "
+                  "leg around the robots near it (robots)")
+      ->capture_default_str();
+  cmd->add_option("--avoid-escape", args->avoid_escape,
+                  "tree: reactive rule 2 when no heading clears the front: turn on for ever (spin, "
+                  "the rule as written) or drive out along the longest body-wide corridor "
+                  "(corridor); the frontier methods keep spin")
+      ->capture_default_str();
+  cmd->add_option(
+         "--random-turn-rate", args->random_turn_rate,
+         "tree: largest turn rate [rad/s] of the reactive search's driving, redrawn every 4 s "
+         "(0 = straight ahead while the front is clear, Table 1's CLEAR -> F; the frontier "
+         "methods' reactive windows keep 0.4)")
+      ->check(finite_range(0.0, 10.0))
       ->capture_default_str();
   cmd->add_option("--time", args->time, "Simulated time limit [s]")
       ->check(finite_range(1e-3, 1e6))

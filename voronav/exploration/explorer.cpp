@@ -25,7 +25,8 @@ struct Agent {
   Agent(const ExplorationOptions& o, Pose2 start, std::uint64_t seed, const GridGeometry& g)
       : body(o.drive, start, seed),
         controller([&] {
-          robot::ReactiveControllerOptions c = o.controller;
+          robot::ReactiveControllerOptions c =
+              o.method == ExplorationMethod::kTree ? o.controller : o.frontier_controller;
           c.seed = seed;
           return c;
         }()),
@@ -52,6 +53,8 @@ struct Agent {
   double wd_t = 0.0;
   double back_off_until = 0.0;  // [s] yields to a robot with a lower index until then
   bool stalled = false;
+  double leg_replan_t = -1e9;  // [s] last TreeLegReplan::kAroundRobots re-plan, and where
+  Vec2 leg_replan_at;
 };
 
 OccupancyGrid team_grid(const mapping::OccupancyMap& m) {
@@ -151,6 +154,17 @@ std::string_view to_string(ExplorationMethod m) {
   return "?";
 }
 
+std::string_view to_string(TreeLegReplan r) {
+  return r == TreeLegReplan::kNone ? "none" : "robots";
+}
+
+TreeLegReplan parse_tree_leg_replan(std::string_view name) {
+  if (name == "none") return TreeLegReplan::kNone;
+  if (name == "robots") return TreeLegReplan::kAroundRobots;
+  throw Error("--tree-leg-replan", 0,
+              "expected one of none, robots; got '" + std::string(name) + "'");
+}
+
 std::string_view to_string(TreeReplan r) {
   return r == TreeReplan::kNone ? "none" : "robots";
 }
@@ -206,6 +220,7 @@ void ExplorationOptions::validate() const {
   drive.validate();
   laser.validate();
   controller.validate();
+  frontier_controller.validate();
   features.validate();
   tree.validate();
   frontier.validate();
@@ -341,6 +356,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   result.recording.starts = starts;
 
   const double plan_radius = body + o.clearance;
+  constexpr double kRobotAwareRange = 3.0;  // [m] robots nearer than this block planning
   BinaryGrid trav;
   planning::BfsFlood flood;
   const bool tree_method =
@@ -561,8 +577,43 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         continue;
       }
       a.legs.front() = path;
+      // Same goal, new route: the robot's block and progress clocks go on (resetting them let a
+      // robot that the route check re-routed every 2 s stand still for minutes; willow, 16).
+      const double blocked_for = a.blocked_time, no_progress = a.since_progress;
       start_follow(a, std::move(path));
+      a.blocked_time = blocked_for;
+      a.since_progress = no_progress;
     }
+  };
+
+  // TreeLegReplan::kAroundRobots: a robot blocked on a tree leg re-plans the rest of the leg
+  // from where it is to the same leaf on the current tree grid, with the discs of the robots
+  // within kRobotAwareRange blocked (the frontier methods' robot-aware planning). True when a
+  // new leg was started. Without it the single dispatch sends all robots along the common trunk
+  // and on willow with 16 robots they jammed in cluttered passages for minutes (issue 14).
+  const auto replan_leg = [&](std::size_t i, double t) {
+    Agent& a = *agents[i];
+    if (!a.on_tree || a.route.empty() || a.legs.empty()) return false;
+    const Vec2 pos = a.body.true_pose().position, leaf = a.route.back();
+    // A re-plan that did not get the robot moving is not repeated on the same spot for 15 s.
+    if (t - a.leg_replan_t < 15.0 && distance(pos, a.leg_replan_at) < o.stall_distance)
+      return false;
+    a.leg_replan_t = t;
+    a.leg_replan_at = pos;
+    BinaryGrid opt = tree_grid(team_grid(team), plan_radius);
+    std::vector<Vec2> others_at;
+    for (std::size_t j = 0; j < agents.size(); ++j)
+      if (j != i) others_at.push_back(agents[j]->body.true_pose().position);
+    const std::vector<std::size_t> marked =
+        block_robot_discs(opt, pos, others_at, 2.0 * body + 0.05, kRobotAwareRange);
+    std::vector<Vec2> path = path_on(opt, pos, leaf);
+    restore_free_cells(opt, marked);
+    if (path.size() < 2 || distance(path.back(), leaf) > 0.5) return false;
+    ++result.leg_replans;
+    a.legs.front() = path;
+    start_follow(a, std::move(path));
+    a.on_tree = true;
+    return true;
   };
 
   // kTreeFrontier (ours): the current tree's leaves, rebuilt every hybrid_tree_period from all
@@ -592,7 +643,6 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   // plans around a robot in its way, and a goal reachable only through a crowd costs the detour
   // or is out of reach this round. Without it 16 robots on willow crowded into the corridors
   // at the last frontiers and jammed there (stalled robots). Returns the cells to restore.
-  constexpr double kRobotAwareRange = 3.0;
   const auto mark_others = [&](std::size_t i) {
     std::vector<Vec2> others_at;
     for (std::size_t j = 0; j < agents.size(); ++j)
@@ -837,8 +887,8 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
                 if (distance(agents[j]->body.true_pose().position, pose.position) <
                     2.0 * body + 0.3)
                   a.back_off_until = t + 2.0;
-          } else {
-            a.blocked_time = 0.0;
+          } else if (!a.on_tree) {
+            a.blocked_time = 0.0;  // frontier goals: as before issue 14's tree trace (below)
           }
           if (t < a.back_off_until) cmd = {-0.1, 0.0};
           a.since_progress += o.dt;
@@ -852,6 +902,8 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
               a.goal.reset();
               a.route.clear();
               a.mode = AgentMode::kReactive;
+            } else if (o.tree_leg_replan == TreeLegReplan::kAroundRobots && replan_leg(i, t)) {
+              a.reactive_until = 0.0;  // a new leg around the robots in the way
             } else {
               ++a.next;  // skip the waypoint that cannot be reached
             }
@@ -870,6 +922,11 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           cmd.v = 0.0;
           if (cmd.omega == 0.0) cmd.omega = o.controller.obs_avoid;
           a.blocked_time += o.dt;
+        } else if (cmd.v > 0.0) {
+          // Only a forward step that is taken ends a block. (The guard's 13 beams may see a
+          // clear front while the footprint check refuses: resetting on the guard alone kept a
+          // following robot standing still until the 20 s watchdog; willow, 16 robots, tree.)
+          a.blocked_time = 0.0;
         }
       }
       a.body.command(cmd);
@@ -951,6 +1008,8 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   }
   result.overlap =
       team_known ? static_cast<double>(sum_known) / static_cast<double>(team_known) - 1.0 : 0.0;
+  for (auto& ap : agents)
+    result.escapes += ap->controller.escapes();
   result.feature_points = static_cast<int>(features.size());
   result.recording.feature_points = features.points();
   result.recording.team_map = team_grid(team);
@@ -968,7 +1027,8 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"leaves\":" << r.leaves << ",\"trees\":" << r.trees << ",\"dispatches\":" << r.dispatches
      << ",\"leaves_reached\":" << r.leaves_reached << ",\"frontier_goals\":" << r.frontier_goals
      << ",\"leaf_goals\":" << r.leaf_goals << ",\"stalled_robots\":" << r.stalled_robots
-     << ",\"watchdog_events\":" << r.watchdog_events
+     << ",\"watchdog_events\":" << r.watchdog_events << ",\"leg_replans\":" << r.leg_replans
+     << ",\"escapes\":" << r.escapes
      << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;
   if (include_recording) {

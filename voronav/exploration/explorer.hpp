@@ -51,6 +51,29 @@ enum class TreeReplan { kNone, kFromRobots };
 /// "none" / "robots"; throws voronav::Error naming the accepted values.
 [[nodiscard]] TreeReplan parse_tree_replan(std::string_view name);
 
+/// What a robot blocked for 3 s on a tree leg does: kNone = skips the waypoint it cannot reach
+/// and searches reactively for 5 s (before issue 14's willow trace); kAroundRobots = re-plans the
+/// rest of the leg to the same leaf with the other robots within 3 m blocked, as the frontier
+/// methods plan (ours; the paper's robots are never blocked by each other in its figures).
+enum class TreeLegReplan { kNone, kAroundRobots };
+[[nodiscard]] std::string_view to_string(TreeLegReplan r);
+/// "none" / "robots"; throws voronav::Error naming the accepted values.
+[[nodiscard]] TreeLegReplan parse_tree_leg_replan(std::string_view name);
+
+/// Controller options of kTree's reactive search and of the frontier methods' reactive windows.
+[[nodiscard]] inline robot::ReactiveControllerOptions tree_search_controller() {
+  robot::ReactiveControllerOptions c;
+  c.random_turn_rate = 0.0;
+  c.avoid_escape = robot::AvoidEscape::kCorridor;
+  return c;
+}
+[[nodiscard]] inline robot::ReactiveControllerOptions frontier_window_controller() {
+  robot::ReactiveControllerOptions c;
+  c.random_turn_rate = 0.4;
+  c.avoid_escape = robot::AvoidEscape::kSpin;
+  return c;
+}
+
 struct ExplorationOptions {
   ExplorationMethod method = ExplorationMethod::kTree;
   int robots = 4;                  ///< team size (1..64)
@@ -64,7 +87,8 @@ struct ExplorationOptions {
   int map_beam_stride = 2;         ///< every k-th beam is used for mapping
   double record_period = 1.0;      ///< a frame is recorded this often [s]
   double tree_start_time = 400.0;  ///< [s] reactive search before the first tree (seed 004)
-  TreeReplan tree_replan = TreeReplan::kNone;  ///< kTree only (see TreeReplan)
+  TreeReplan tree_replan = TreeReplan::kNone;                    ///< kTree only (see TreeReplan)
+  TreeLegReplan tree_leg_replan = TreeLegReplan::kAroundRobots;  ///< kTree (see TreeLegReplan)
   /// [s] kTreeFrontier: its first tree (feature points are collected from the start).
   double hybrid_tree_start_time = 10.0;
   double hybrid_tree_period = 10.0;  ///< [s] kTreeFrontier: the tree is rebuilt this often
@@ -84,7 +108,14 @@ struct ExplorationOptions {
   double min_cell_size = 0.1;
   robot::DiffDriveOptions drive;
   robot::LaserOptions laser;
-  robot::ReactiveControllerOptions controller;
+  /// kTree's reactive search (seed 004, section 3.2): straight ahead while the front is clear
+  /// (Table 1: CLEAR -> F; random_turn_rate 0) and the corridor escape of rule 2 (issue 14).
+  robot::ReactiveControllerOptions controller = tree_search_controller();
+  /// The reactive windows of the frontier methods (kFrontier, kCoordinated, kTreeFrontier): the
+  /// controller as before issue 14's tree work (random turns of up to 0.4 rad/s, rule 2 spins),
+  /// which their measured stall fixes rely on (willow, 16 robots, seed 1, frontier: 59.6 %,
+  /// 0 stalled; with the corridor escape 65.9 %, 1 stalled).
+  robot::ReactiveControllerOptions frontier_controller = frontier_window_controller();
   FeaturePointOptions features;
   VoronoiTreeOptions tree;
   FrontierOptions frontier;
@@ -157,6 +188,8 @@ struct ExplorationResult {
   int stalled_robots = 0;
   /// Goals given up by the progress watchdog (no progress for stall_time / 3).
   int watchdog_events = 0;
+  int leg_replans = 0;  ///< tree legs re-planned around robots (TreeLegReplan::kAroundRobots)
+  int escapes = 0;      ///< corridor escapes of the reactive controllers (AvoidEscape::kCorridor)
   std::size_t reachable_free_cells = 0;
   ExplorationRecording recording;
 };

@@ -141,6 +141,33 @@ TEST(Explorer, JsonHasTheDocumentedFields) {
   for (const char* key : {"\"coverage\":0.5", "\"t90_s\":12.5", "\"t99_s\":null", "\"distance_m\":",
                           "\"collisions\":", "\"feature_points\":", "\"leaves\":"})
     EXPECT_NE(j.find(key), std::string::npos) << key << " in " << j;
+  for (const char* key : {"\"leg_replans\":0", "\"escapes\":0"})
+    EXPECT_NE(j.find(key), std::string::npos) << key << " in " << j;
+}
+
+// Issue 14: the tree's reactive search drives straight while its sectors are clear (Table 1:
+// CLEAR -> F) and escapes clutter; the frontier methods' reactive windows keep the controller
+// their stall fixes were measured with.
+TEST(Explorer, TreeSearchDrivesStraightWhenClearFrontierWindowsKeepTheirController) {
+  const ExplorationOptions o;
+  EXPECT_EQ(o.controller.random_turn_rate, 0.0);
+  EXPECT_EQ(o.controller.avoid_escape, robot::AvoidEscape::kCorridor);
+  EXPECT_EQ(o.frontier_controller.random_turn_rate, 0.4);
+  EXPECT_EQ(o.frontier_controller.avoid_escape, robot::AvoidEscape::kSpin);
+  EXPECT_EQ(o.tree_leg_replan, TreeLegReplan::kAroundRobots);
+  robot::ReactiveController c(o.controller);
+  robot::LaserScan clear;
+  clear.angle_min = -3.14159;
+  clear.angle_increment = 2 * 3.14159 / 360;
+  clear.range_max = 3.0;
+  clear.ranges.assign(360, 3.0F);
+  for (int k = 0; k < 100; ++k) {  // 10 s: longer than the 4 s random period
+    const robot::BodyVelocity cmd = c.update(clear, 0.1);
+    EXPECT_DOUBLE_EQ(cmd.v, o.controller.drive_velocity);
+    EXPECT_DOUBLE_EQ(cmd.omega, 0.0);
+  }
+  EXPECT_EQ(parse_tree_leg_replan("none"), TreeLegReplan::kNone);
+  EXPECT_THROW((void)parse_tree_leg_replan("sometimes"), Error);
 }
 
 }  // namespace

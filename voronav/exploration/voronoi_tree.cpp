@@ -31,15 +31,40 @@ double polyline_length(const std::vector<Vec2>& p) {
 std::vector<Vec2> checked_path(const BinaryGrid& g, planning::AStarPlanner& astar, Vec2 a, Vec2 b,
                                double max_detour_factor) {
   if (segment_free(g, a, b)) return {a, b};
-  const auto ca = g.geometry().world_to_cell(a), cb = g.geometry().world_to_cell(b);
+  const GridGeometry& gg = g.geometry();
+  const auto ca = gg.world_to_cell(a), cb = gg.world_to_cell(b);
   if (!ca || !cb) return {};
-  const planning::PlanResult r = astar.plan(g, *ca, *cb);
-  if (!r.ok()) return {};
+  // Only a path of length <= bound is kept, and every point p of such a path has
+  // |p - a| + |p - b| <= bound, so |p - mid| <= bound / 2: A* runs on that square of the grid
+  // only. (On the whole grid, an edge whose ends are not connected flooded the whole map: the
+  // tree of tree-frontier on willow took most of the run time; issue 14.)
+  const double bound = max_detour_factor * distance(a, b) + 2.0 * g.resolution();
+  const auto cm = gg.world_to_cell((a + b) * 0.5);
+  // (An unbounded detour, as the re-attachment of a third child asks, crops nothing.)
+  const double half = std::ceil(0.5 * bound / g.resolution()) + 2.0;
+  const int r = half < static_cast<double>(g.width() + g.height()) ? static_cast<int>(half)
+                                                                   : g.width() + g.height();
+  const Cell mid = cm ? *cm : *ca;
+  const int x0 = std::max(0, mid.x - r), y0 = std::max(0, mid.y - r);
+  const int x1 = std::min(g.width() - 1, mid.x + r), y1 = std::min(g.height() - 1, mid.y + r);
+  GridGeometry cg = gg;
+  cg.width = x1 - x0 + 1;
+  cg.height = y1 - y0 + 1;
+  cg.origin =
+      Pose2{gg.origin.transform(Vec2{x0 * gg.resolution, y0 * gg.resolution}), gg.origin.yaw};
+  BinaryGrid crop(cg, 1);
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x)
+      crop[Cell{x - x0, y - y0}] = g[Cell{x, y}];
+  const Cell from{ca->x - x0, ca->y - y0}, to{cb->x - x0, cb->y - y0};
+  if (!crop.contains(from) || !crop.contains(to)) return {};
+  const planning::PlanResult res = astar.plan(crop, from, to);
+  if (!res.ok()) return {};
   std::vector<Vec2> path{a};
-  for (std::size_t i = 1; i + 1 < r.path.size(); ++i)
-    path.push_back(g.geometry().cell_center(r.path[i]));
+  for (std::size_t i = 1; i + 1 < res.path.size(); ++i)
+    path.push_back(cg.cell_center(res.path[i]));
   path.push_back(b);
-  if (polyline_length(path) > max_detour_factor * distance(a, b) + 2.0 * g.resolution()) return {};
+  if (polyline_length(path) > bound) return {};
   return path;
 }
 

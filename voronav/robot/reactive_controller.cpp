@@ -36,6 +36,32 @@ std::string_view to_string(ControllerMode m) {
   return "?";
 }
 
+std::string_view to_string(AvoidEscape e) {
+  return e == AvoidEscape::kSpin ? "spin" : "corridor";
+}
+
+AvoidEscape parse_avoid_escape(std::string_view name) {
+  if (name == "spin") return AvoidEscape::kSpin;
+  if (name == "corridor") return AvoidEscape::kCorridor;
+  throw Error("--avoid-escape", 0,
+              "expected one of spin, corridor; got '" + std::string(name) + "'");
+}
+
+double corridor_length(const LaserScan& scan, double bearing, double half_width, double cap) {
+  double len = cap;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    if (!scan.hit(i)) continue;
+    const double r = scan.ranges[i];
+    const double a = scan.angle(i) - bearing;
+    const double along = r * std::cos(a), lateral = r * std::sin(a);
+    // A return level with the centre or behind it never comes closer as the disc moves on.
+    if (std::abs(lateral) >= half_width || along <= 0.0) continue;
+    const double enter = along - std::sqrt(half_width * half_width - lateral * lateral);
+    len = std::min(len, std::max(0.0, enter));
+  }
+  return len;
+}
+
 Heading table1_heading(std::uint8_t bits, Table1Variant variant) {
   if (bits > 0b1111)
     throw Error("OBS_bits", 0, "expected a 4-bit value (0..15), got " + std::to_string(bits));
@@ -99,6 +125,12 @@ void ReactiveControllerOptions::validate() const {
   positive(wall_lost_time, "wall_lost_time");
   positive(wf_gain, "wf_gain");
   positive(random_period, "random_period");
+  positive(escape_after_turn, "escape_after_turn");
+  positive(escape_half_width, "escape_half_width");
+  positive(escape_min_length, "escape_min_length");
+  positive(escape_max_length, "escape_max_length");
+  positive(stuck_radius, "stuck_radius");
+  if (!(stuck_time >= 0.0)) throw Error("ReactiveControllerOptions.stuck_time", 0, ">= 0");
   if (!(random_turn_rate >= 0.0))
     throw Error("ReactiveControllerOptions.random_turn_rate", 0, ">= 0");
   const SectorOptions& s = sectors;
@@ -110,6 +142,26 @@ void ReactiveControllerOptions::validate() const {
 ReactiveController::ReactiveController(const ReactiveControllerOptions& options)
     : options_(options), rng_(options.seed) {
   options_.validate();
+}
+
+// The heading (every 10 deg) whose body-wide corridor is free the longest; an escape along it
+// starts when it is at least escape_min_length long.
+bool ReactiveController::start_escape(const LaserScan& scan) {
+  const ReactiveControllerOptions& o = options_;
+  double best = 0.0, best_bearing = 0.0;
+  for (int k = 0; k < 36; ++k) {
+    const double b = wrap_angle(k * 0.17453292519943295);
+    const double len = corridor_length(scan, b, o.escape_half_width, 2.0);
+    if (len > best + 1e-9) {
+      best = len;
+      best_bearing = b;
+    }
+  }
+  if (best < o.escape_min_length) return false;
+  escape_heading_ = wrap_angle(scan.pose.yaw + best_bearing);
+  escape_left_ = std::min(o.escape_max_length, best - 0.05);
+  ++escapes_;
+  return true;
 }
 
 BodyVelocity ReactiveController::update(const LaserScan& scan, double dt) {
@@ -124,10 +176,44 @@ BodyVelocity ReactiveController::update(const LaserScan& scan, double dt) {
     return h == Heading::kRight ? -o.obs_avoid : h == Heading::kForward ? 0.0 : o.obs_avoid;
   };
 
+  // AvoidEscape::kCorridor: a robot that stays on one spot (clutter: avoid turns and short
+  // wall-following moves in turn) escapes too.
+  stuck_clock_ += dt;
+  if (distance(scan.pose.position, stuck_anchor_) > o.stuck_radius) {
+    stuck_anchor_ = scan.pose.position;
+    stuck_since_ = stuck_clock_;
+  } else if (o.avoid_escape == AvoidEscape::kCorridor && o.stuck_time > 0.0 && !escape_heading_ &&
+             stuck_clock_ - stuck_since_ > o.stuck_time) {
+    stuck_since_ = stuck_clock_;
+    start_escape(scan);
+  }
+  // AvoidEscape::kCorridor: drive out of clutter along the corridor chosen by start_escape.
+  if (escape_heading_) {
+    const double err = wrap_angle(*escape_heading_ - scan.pose.yaw);
+    const double steer = std::clamp(2.0 * err, -o.obs_avoid, o.obs_avoid);
+    if (std::abs(err) > 0.15) return {0.0, steer};
+    const bool blocked = corridor_length(scan, 0.0, o.escape_half_width, 1.0) < 0.05;
+    if (!blocked && escape_left_ > 0.0) {
+      escape_left_ -= o.obs_approach * dt;
+      return {o.obs_approach, steer};
+    }
+    escape_heading_.reset();  // done (or blocked): back to the rules
+    avoid_turned_ = 0.0;
+    mode_ = ControllerMode::kRandom;
+    avoid_heading_.reset();
+  }
+
   // Rule 2: an obstacle in front within obs_dist -> turn on the spot by Table 1 until the front
   // is clear. The heading is kept while turning, so the robot does not dither.
   if ((bits & (kObsFL | kObsFR)) != 0) {
+    if (mode_ == ControllerMode::kAvoid && o.avoid_escape == AvoidEscape::kCorridor &&
+        avoid_turned_ >= o.escape_after_turn) {
+      // Turned that far and the front never cleared: escape along a corridor if there is one.
+      avoid_turned_ = 0.0;
+      if (start_escape(scan)) return {0.0, 0.0};
+    }
     if (mode_ != ControllerMode::kAvoid || !avoid_heading_) {
+      avoid_turned_ = 0.0;
       Heading h = table1_heading(bits, o.table);
       // "F or L" with both front sectors blocked: forward would hit, so L. A forward heading
       // with a blocked front (cannot come from Table 1 rows with FL/FR set) falls back to L.
@@ -135,11 +221,13 @@ BodyVelocity ReactiveController::update(const LaserScan& scan, double dt) {
       avoid_heading_ = h;
     }
     mode_ = ControllerMode::kAvoid;
+    avoid_turned_ += o.obs_avoid * dt;
     return {0.0, turn(*avoid_heading_)};
   }
   if (mode_ == ControllerMode::kAvoid) {
     mode_ = ControllerMode::kRandom;
     avoid_heading_.reset();
+    avoid_turned_ = 0.0;
   }
 
   // Rule 3: a wall at the side starts wall following (the nearer side).

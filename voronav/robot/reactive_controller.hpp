@@ -89,6 +89,22 @@ struct SectorReadings {
 [[nodiscard]] std::uint8_t obs_bits(const LaserScan& scan, const SectorOptions& sectors,
                                     double distance);
 
+/// What rule 2 does when no heading clears the front: the paper says only "avoid" (회피) at
+/// obs_dist; we read it as a turn on the spot by Table 1 until the front sectors are clear within
+/// obs_dist (kSpin). In clutter no 80 deg cone is clear within obs_dist in any direction and that
+/// turn never ends (traced on willow, 16 robots, issue 14). kCorridor (ours, the default): after
+/// turning escape_after_turn without a clear front, the robot turns to the heading whose
+/// body-wide corridor is free the longest and drives out along it at obs_approach.
+enum class AvoidEscape { kSpin, kCorridor };
+[[nodiscard]] std::string_view to_string(AvoidEscape e);
+/// "spin" / "corridor"; throws voronav::Error naming the accepted values.
+[[nodiscard]] AvoidEscape parse_avoid_escape(std::string_view name);
+
+/// Length [m] a disc of radius `half_width` can travel from the sensor along `bearing` [rad,
+/// robot frame] before it touches a return of `scan` (capped at `cap`; 0 when it touches one now).
+[[nodiscard]] double corridor_length(const LaserScan& scan, double bearing, double half_width,
+                                     double cap);
+
 /// Parameters of the controller (Table 2 values where the paper has them).
 struct ReactiveControllerOptions {
   SectorOptions sectors;
@@ -107,6 +123,15 @@ struct ReactiveControllerOptions {
   double random_turn_rate = 0.4;      ///< [rad/s] max turn rate of random driving
   double random_period = 4.0;         ///< [s] a new random turn rate is drawn this often
   std::uint64_t seed = 1;             ///< random driving seed
+  AvoidEscape avoid_escape = AvoidEscape::kCorridor;  ///< see AvoidEscape
+  double escape_after_turn = 3.141592653589793;  ///< [rad] turned in avoid mode before escaping
+  double escape_half_width = 0.16;  ///< [m] corridor half-width (body radius 0.12 + 4 cm)
+  double escape_min_length = 0.15;  ///< [m] shorter corridors do not count (keep turning)
+  double escape_max_length = 1.0;   ///< [m] an escape drives at most this far
+  /// [s] kCorridor also escapes when the robot has not left a stuck_radius circle for this long
+  /// (dithering between avoid turns and short wall-following moves in clutter; 0 = never).
+  double stuck_time = 20.0;
+  double stuck_radius = 0.5;  ///< [m]
 
   void validate() const;
 };
@@ -122,6 +147,9 @@ class ReactiveController {
   [[nodiscard]] ControllerMode mode() const { return mode_; }
   [[nodiscard]] std::uint8_t last_bits() const { return last_bits_; }
   [[nodiscard]] const ReactiveControllerOptions& options() const { return options_; }
+  /// Escapes started (AvoidEscape::kCorridor) since construction.
+  [[nodiscard]] int escapes() const { return escapes_; }
+  [[nodiscard]] bool escaping() const { return escape_heading_.has_value(); }
 
  private:
   ReactiveControllerOptions options_;
@@ -133,7 +161,15 @@ class ReactiveController {
   double random_timer_ = 0.0;
   double wall_lost_timer_ = 0.0;
   double wall_follow_timer_ = 0.0;
-  double wall_cooldown_ = 0.0;  // [s] left during which walls do not start wall following
+  double wall_cooldown_ = 0.0;            // [s] left during which walls do not start wall following
+  double avoid_turned_ = 0.0;             // [rad] turned in the current avoid manoeuvre
+  std::optional<double> escape_heading_;  // [rad, world] corridor escape under way
+  double escape_left_ = 0.0;              // [m] still to drive on the escape
+  int escapes_ = 0;
+  Vec2 stuck_anchor_;         // where the robot has stayed since stuck_since_
+  double stuck_clock_ = 0.0;  // [s] time since construction (sum of dt)
+  double stuck_since_ = 0.0;
+  bool start_escape(const LaserScan& scan);
 };
 
 }  // namespace voronav::robot

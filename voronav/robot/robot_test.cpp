@@ -308,6 +308,7 @@ TEST(Controller, PaperTableDithersInFrontOfAWallCorrectedDoesNot) {
     DiffDriveRobot robot({}, {{1.95, 0.43}, -1.0});  // 0.38 m from the bottom wall, facing it
     ReactiveControllerOptions co;
     co.table = variant;
+    co.avoid_escape = AvoidEscape::kSpin;  // rule 2 as written: the table alone decides
     ReactiveController c(co);
     for (int k = 0; k < 600; ++k) {
       robot.command(c.update(cast_scan(world, robot.true_pose(), LaserOptions{}), 0.1));
@@ -318,6 +319,55 @@ TEST(Controller, PaperTableDithersInFrontOfAWallCorrectedDoesNot) {
   };
   EXPECT_LT(travelled(Table1Variant::kPaper), 0.2);
   EXPECT_GT(travelled(Table1Variant::kCorrected), 5.0);
+}
+
+// corridor_length: hand-computed entries of a disc of radius 0.16 m into single returns.
+TEST(Controller, CorridorLengthIsWhereTheDiscTouchesAReturn) {
+  const double d = kPi / 180;
+  // A return straight ahead at 1 m: the disc touches it after 1 - 0.16 = 0.84 m.
+  EXPECT_NEAR(corridor_length(synthetic_scan({{-0.4 * d, 0.4 * d}}, 1.0), 0.0, 0.16, 2.0), 0.84,
+              1e-6);
+  // Beside the centre, just behind it (91 deg, 0.14 m): never closer when driving on: the cap.
+  EXPECT_DOUBLE_EQ(corridor_length(synthetic_scan({{90.5 * d, 91.5 * d}}, 0.14), 0.0, 0.16, 2.0),
+                   2.0);
+  // 45 deg at 0.2 m: along = lateral = 0.1414; enters at 0.1414 - sqrt(0.16^2 - 0.1414^2).
+  const double a = 0.2 * std::cos(45 * d);
+  EXPECT_NEAR(corridor_length(synthetic_scan({{44.6 * d, 45.4 * d}}, 0.2), 0.0, 0.16, 2.0),
+              a - std::sqrt(0.16 * 0.16 - a * a), 1e-3);
+  // The same return seen along bearing 45 deg: the disc touches it at 0.2 - 0.16 m.
+  EXPECT_NEAR(corridor_length(synthetic_scan({{44.6 * d, 45.4 * d}}, 0.2), 45 * d, 0.16, 2.0), 0.04,
+              1e-3);
+}
+
+// Rule 2 as written turns on the spot until an 80 deg front cone is clear within obs_dist. In a
+// 0.5 m wide passage no heading clears it (the cone's edge beams meet the walls at
+// 0.25 / sin 40 deg = 0.39 m), so the robot spins for ever (AvoidEscape::kSpin); the corridor
+// escape drives out along the passage.
+TEST(Controller, CorridorEscapeLeavesAPassageWhereRule2Spins) {
+  BinaryGrid world = box_world(140, 60, 0.05);  // 7 x 3 m
+  for (int x = 0; x < 140; ++x)
+    for (int y = 0; y < 60; ++y)
+      if (y < 25 || y >= 35) world[Cell{x, y}] = 1;  // free rows 25..34: y in [1.25, 1.75) m
+  const auto run = [&](AvoidEscape escape) {
+    DiffDriveRobot robot({}, {{3.5, 1.5}, 0.3});
+    ReactiveControllerOptions co;
+    co.avoid_escape = escape;
+    ReactiveController c(co);
+    for (int k = 0; k < 600; ++k) {  // 60 s
+      robot.command(c.update(cast_scan(world, robot.true_pose(), LaserOptions{}), 0.1));
+      robot.step(0.1, world);
+    }
+    EXPECT_EQ(robot.collisions(), 0);
+    return std::pair{distance(robot.true_pose().position, Vec2{3.5, 1.5}), c.escapes()};
+  };
+  const auto [spin_moved, spin_escapes] = run(AvoidEscape::kSpin);
+  EXPECT_LT(spin_moved, 0.05);
+  EXPECT_EQ(spin_escapes, 0);
+  const auto [escape_moved, escapes] = run(AvoidEscape::kCorridor);
+  EXPECT_GT(escape_moved, 0.8);
+  EXPECT_GE(escapes, 1);
+  EXPECT_EQ(parse_avoid_escape("spin"), AvoidEscape::kSpin);
+  EXPECT_THROW((void)parse_avoid_escape("twirl"), Error);
 }
 
 }  // namespace
