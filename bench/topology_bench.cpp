@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <random>
 
+#include "free_spots.hpp"
 #include "voronav/field/distance_transform.hpp"
 #include "voronav/io/map_loader.hpp"
 #include "voronav/topology/topological_map.hpp"
@@ -86,17 +87,7 @@ void BM_Topology(benchmark::State& state) {
 void BM_Incremental3x3(benchmark::State& state) {
   const BinaryGrid& map = bench_map();
   voronoi::DynamicGvd g(map);
-  std::vector<Cell> spots;
-  std::mt19937 rng(7);
-  for (int tries = 0; tries < 100000 && spots.size() < 64; ++tries) {
-    const Cell c{1 + static_cast<int>(rng() % static_cast<unsigned>(map.width() - 2)),
-                 1 + static_cast<int>(rng() % static_cast<unsigned>(map.height() - 2))};
-    bool free = true;
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx)
-        free &= map[c + Cell{dx, dy}] == 0;
-    if (free) spots.push_back(c);
-  }
+  const std::vector<Cell> spots = voronav::bench::free_3x3_spots(map, 7, 64, 100000);
   std::size_t k = 0;
   bool add = true;
   std::vector<voronoi::CellChange> changes(9);

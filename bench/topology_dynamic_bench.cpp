@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "free_spots.hpp"
 #include "voronav/core/occupancy.hpp"
 #include "voronav/io/map_loader.hpp"
 #include "voronav/voronoi/gvd.hpp"
@@ -40,18 +41,7 @@ fs::path find_map(const std::vector<std::string>& rels) {
 }
 
 std::vector<Cell> random_spots(const BinaryGrid& map, std::uint32_t seed, std::size_t n) {
-  std::vector<Cell> spots;
-  std::mt19937 rng(seed);
-  for (int tries = 0; tries < 1000000 && spots.size() < n; ++tries) {
-    const Cell c{1 + static_cast<int>(rng() % static_cast<unsigned>(map.width() - 2)),
-                 1 + static_cast<int>(rng() % static_cast<unsigned>(map.height() - 2))};
-    bool free = true;
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx)
-        free &= map[c + Cell{dx, dy}] == 0;
-    if (free) spots.push_back(c);
-  }
-  return spots;
+  return voronav::bench::free_3x3_spots(map, seed, n);
 }
 
 void full(benchmark::State& state, const BinaryGrid* map) {

@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "free_spots.hpp"
 #include "voronav/core/occupancy.hpp"
 #include "voronav/io/map_loader.hpp"
 #include "voronav/voronoi/gvd.hpp"
@@ -18,18 +19,7 @@ using namespace voronav;
 
 // Same places as the benchmark (seed 7): free 3x3 blocks away from the border.
 static std::vector<Cell> random_spots(const BinaryGrid& map, std::uint32_t seed, std::size_t n) {
-  std::vector<Cell> spots;
-  std::mt19937 rng(seed);
-  for (int tries = 0; tries < 1000000 && spots.size() < n; ++tries) {
-    const Cell c{1 + static_cast<int>(rng() % static_cast<unsigned>(map.width() - 2)),
-                 1 + static_cast<int>(rng() % static_cast<unsigned>(map.height() - 2))};
-    bool free = true;
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx)
-        free &= map[c + Cell{dx, dy}] == 0;
-    if (free) spots.push_back(c);
-  }
-  return spots;
+  return voronav::bench::free_3x3_spots(map, seed, n);
 }
 
 __attribute__((noinline)) void measured_update(voronoi::DynamicGvd& g,
