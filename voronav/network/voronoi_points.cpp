@@ -5,8 +5,10 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <queue>
 #include <tuple>
+#include <unordered_map>
 
 #include "voronav/core/error.hpp"
 #include "voronav/field/distance_transform.hpp"
@@ -557,56 +559,127 @@ PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
   return s;
 }
 
-ImprovementCheck search_would_improve(std::span<const VoronoiPoint> points, const PointSearch& done,
-                                      std::span<const VoronoiPoint> added,
-                                      std::span<const double> added_start, double robot_radius_m,
-                                      std::size_t target_begin, double tolerance) {
-  if (done.cost.size() != points.size() || added_start.size() != added.size())
-    throw Error("search_would_improve", 0,
-                "expected one cost per point and one start cost per added point");
-  const std::size_t n = points.size(), k = added.size();
+struct CopyCheck::Index {
+  std::vector<VoronoiPoint> points;
+  std::vector<double> cost;
+  double r = 0.0;
+  double amax = 0.0;  // the largest (c - r) of the held points
+  std::size_t target_begin = 0;
+  std::optional<PointGrid> grid;
+  bool brute = false;  // a held point is not finite: compare every pair
+  // Exact points (position, clearance) -> the lowest cost held for them.
+  struct Key {
+    double x, y;
+    float c;
+    bool operator==(const Key&) const = default;
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const {
+      std::uint64_t a = 0, b = 0;
+      std::uint32_t c = 0;
+      std::memcpy(&a, &k.x, sizeof a);
+      std::memcpy(&b, &k.y, sizeof b);
+      std::memcpy(&c, &k.c, sizeof c);
+      std::uint64_t h = (a * 0x9e3779b97f4a7c15ull) ^ (b + 0xbf58476d1ce4e5b9ull + (a << 6));
+      h = (h ^ (h >> 31) ^ c) * 0x94d049bb133111ebull;
+      return static_cast<std::size_t>(h ^ (h >> 29));
+    }
+  };
+  std::unordered_map<Key, double, Hash> exact;
+};
+
+CopyCheck::CopyCheck(std::span<const VoronoiPoint> points, const PointSearch& done,
+                     double robot_radius_m, std::size_t target_begin) {
+  if (done.cost.size() != points.size())
+    throw Error("search_would_improve", 0, "expected one cost per point");
+  auto ix = std::make_shared<Index>();
+  ix->points.assign(points.begin(), points.end());
+  ix->cost = done.cost;
+  ix->r = robot_radius_m;
+  ix->target_begin = target_begin;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    ix->amax = std::max(ix->amax, static_cast<double>(points[i].clearance) - robot_radius_m);
+    if (!std::isfinite(done.cost[i])) continue;
+    const Index::Key k{points[i].position.x, points[i].position.y, points[i].clearance};
+    const auto [it, fresh] = ix->exact.emplace(k, done.cost[i]);
+    if (!fresh) it->second = std::min(it->second, done.cost[i]);
+  }
+  bool finite = true;
+  for (const auto& p : points)
+    finite = finite && std::isfinite(p.position.x) && std::isfinite(p.position.y);
+  ix->brute = !finite;
+  if (finite && !points.empty() && ix->amax > 0.0)
+    ix->grid.emplace(points, std::min(ix->amax, 1.0), robot_radius_m);
+  index_ = std::move(ix);
+}
+
+ImprovementCheck CopyCheck::improves(std::span<const VoronoiPoint> added,
+                                     std::span<const double> added_start, double tolerance) const {
+  if (added_start.size() != added.size())
+    throw Error("search_would_improve", 0, "expected one start cost per added point");
+  const Index& ix = *index_;
+  const std::size_t n = ix.points.size(), k = added.size();
+  const double r = ix.r;
   ImprovementCheck out;
-  // Costs of every point (old ones first, then the added ones) as the search over all points
-  // would lower them; only lowered points are expanded.
-  std::vector<double> cost(done.cost.begin(), done.cost.end());
-  cost.resize(n + k, std::numeric_limits<double>::infinity());
-  auto at = [&](std::size_t i) -> const VoronoiPoint& { return i < n ? points[i] : added[i - n]; };
+  // Costs the search over all points would lower: held points (sparse) and added points.
+  std::unordered_map<std::size_t, double> lowered;
+  std::vector<double> add_cost(k, std::numeric_limits<double>::infinity());
+  auto cost_of = [&](std::size_t i) {
+    if (i >= n) return add_cost[i - n];
+    const auto it = lowered.find(i);
+    return it == lowered.end() ? ix.cost[i] : it->second;
+  };
+  auto at = [&](std::size_t i) -> const VoronoiPoint& {
+    return i < n ? ix.points[i] : added[i - n];
+  };
+  auto redundant = [&](const VoronoiPoint& p, double c) {
+    const auto it = ix.exact.find(Index::Key{p.position.x, p.position.y, p.clearance});
+    return it != ix.exact.end() && it->second <= c;
+  };
+  // Held points that may continue p (the grid's cells within (c_p - r) + their largest (c - r)).
+  auto near_held = [&](const VoronoiPoint& p, auto&& f) {
+    const double a = static_cast<double>(p.clearance) - r;
+    if (a <= 0.0 || !std::isfinite(p.position.x) || !std::isfinite(p.position.y)) return;
+    if (ix.brute) {
+      for (std::size_t i = 0; i < n; ++i)
+        f(i);
+      return;
+    }
+    if (!ix.grid) return;
+    const double margin =
+        1e-6 * (1.0 + a + ix.amax + std::abs(p.position.x) + std::abs(p.position.y));
+    ix.grid->for_each_near(p.position, a + ix.amax + margin, a, -kHuge, margin, f);
+  };
   using Item = std::pair<double, std::size_t>;
   std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
   // A target is lowered: the copy is new. Another point is lowered: it is expanded.
   auto lower = [&](std::size_t j, double c) {
-    if (j < n && j >= target_begin) {
-      if (c < cost[j] - tolerance || (!std::isfinite(cost[j]) && std::isfinite(c))) {
-        out.improves = true;
-        return true;
-      }
-      return false;
+    if (j < n && j >= ix.target_begin) {
+      const double old = ix.cost[j];
+      return c < old - tolerance || (!std::isfinite(old) && std::isfinite(c));
     }
-    if (c < cost[j]) {
-      cost[j] = c;
+    if (c < cost_of(j)) {
+      if (j < n)
+        lowered[j] = c;
+      else
+        add_cost[j - n] = c;
       open.push({c, j});
     }
     return false;
   };
   for (std::size_t a = 0; a < k; ++a) {
     const VoronoiPoint& p = added[a];
+    ++out.work;  // looked up among the held points
+    if (redundant(p, added_start[a])) continue;
+    // Its cost through the held points (a copy can join two of them).
     double c = added_start[a];
-    bool redundant = false;
-    // Its cost through the points held (a copy can join two of them), and whether it is an
-    // exact copy of one held at no higher cost (then it changes nothing).
-    for (std::size_t i = 0; i < n; ++i) {
+    near_held(p, [&](std::size_t i) {
       ++out.work;
-      if (!std::isfinite(cost[i])) continue;
-      const VoronoiPoint& q = points[i];
-      if (q.position == p.position && q.clearance == p.clearance && cost[i] <= c) {
-        redundant = true;
-        break;
-      }
-      if (continues_inline(q, p, robot_radius_m))
-        c = std::min(c, cost[i] + distance(q.position, p.position));
-    }
-    if (!redundant && std::isfinite(c)) {
-      cost[n + a] = c;
+      if (std::isfinite(ix.cost[i]) && continues_inline(ix.points[i], p, r))
+        c = std::min(c, ix.cost[i] + distance(ix.points[i].position, p.position));
+    });
+    if (std::isfinite(c) && !redundant(p, c)) {
+      add_cost[a] = c;
       open.push({c, n + a});
     }
   }
@@ -614,15 +687,31 @@ ImprovementCheck search_would_improve(std::span<const VoronoiPoint> points, cons
     const double c = open.top().first;
     const std::size_t i = open.top().second;
     open.pop();
-    if (c > cost[i]) continue;  // lowered again since
+    if (c > cost_of(i)) continue;  // lowered again since
     const VoronoiPoint& pi = at(i);
-    for (std::size_t j = 0; j < n + k; ++j) {
+    bool hit = false;
+    auto relax = [&](std::size_t j) {
       ++out.work;
-      if (j == i || !continues_inline(pi, at(j), robot_radius_m)) continue;
-      if (lower(j, c + distance(pi.position, at(j).position))) return out;
+      if (hit || j == i || !continues_inline(pi, at(j), r)) return;
+      hit = lower(j, c + distance(pi.position, at(j).position));
+    };
+    near_held(pi, relax);
+    for (std::size_t a = 0; a < k && !hit; ++a)
+      relax(n + a);
+    if (hit) {
+      out.improves = true;
+      return out;
     }
   }
   return out;
+}
+
+ImprovementCheck search_would_improve(std::span<const VoronoiPoint> points, const PointSearch& done,
+                                      std::span<const VoronoiPoint> added,
+                                      std::span<const double> added_start, double robot_radius_m,
+                                      std::size_t target_begin, double tolerance) {
+  return CopyCheck(points, done, robot_radius_m, target_begin)
+      .improves(added, added_start, tolerance);
 }
 
 std::vector<std::size_t> trace_points(const PointSearch& s, std::size_t last) {

@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
@@ -118,6 +119,22 @@ struct ImprovementCheck {
   bool improves = false;
   std::size_t work = 0;
 };
+/// The held points and their costs indexed once (a hash of exact points, a grid by position), so
+/// that every copy heard until the robot's next search is checked against the same index.
+class CopyCheck {
+ public:
+  /// Copies what it needs; throws voronav::Error when `done` does not match `points`.
+  CopyCheck(std::span<const VoronoiPoint> points, const PointSearch& done, double robot_radius_m,
+            std::size_t target_begin);
+  [[nodiscard]] ImprovementCheck improves(std::span<const VoronoiPoint> added,
+                                          std::span<const double> added_start,
+                                          double tolerance) const;
+
+ private:
+  struct Index;
+  std::shared_ptr<const Index> index_;
+};
+/// CopyCheck(points, done, robot_radius_m, target_begin).improves(added, added_start, tolerance).
 [[nodiscard]] ImprovementCheck search_would_improve(std::span<const VoronoiPoint> points,
                                                     const PointSearch& done,
                                                     std::span<const VoronoiPoint> added,

@@ -170,6 +170,7 @@ bool RobotAgent::try_continue() {
   // What this search was run on (copy_is_new compares).
   r.s_map_version = r.map.version();
   r.s_trail_size = r.walk_trail.size();
+  r.s_check.reset();
   ++report_.point_searches;
   return !r.s_sent.empty() || (has_dest && std::isfinite(r.s_search.cost.back()));
 }
@@ -337,8 +338,8 @@ bool RobotAgent::copy_is_new(const SearchMessage& m) {
   for (std::size_t i = 0; i < start.size(); ++i)
     start[i] = m.open_points[i].cost;
   const auto chk = timed([&] {
-    return search_would_improve(r.s_comb, r.s_search, m.open_points, start, opt().robot_radius_m,
-                                r.s_na, kCopyImproveM);
+    if (!r.s_check) r.s_check.emplace(r.s_comb, r.s_search, opt().robot_radius_m, r.s_na);
+    return r.s_check->improves(m.open_points, start, kCopyImproveM);
   });
   report_.metrics.work += chk.work;
   return chk.improves;

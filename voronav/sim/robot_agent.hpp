@@ -138,6 +138,7 @@ class RobotAgent {
     SegmentCache own_moves;           // try_continue's own-edge checks, until the map changes
     std::uint64_t s_map_version = ~std::uint64_t{0};  // map version of the last point search
     std::size_t s_trail_size = 0;                     // walk_trail size at the last point search
+    std::optional<network::CopyCheck> s_check;  // the last search's points, indexed for copies
     Walk walk = Walk::kIdle;
     double walk_since_check = 0.0;
     double bridge_at = -1.0;  // when to start bridging if no continuable Search came
