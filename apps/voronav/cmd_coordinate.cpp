@@ -47,6 +47,7 @@ struct CoordArgs {
   std::string ga_three_opt_order = "paper";
   int ga_three_opt_depth = 2;
   int ga_three_opt_patience = 0;
+  int ga_threads = 0;
   int ga_population = 0;
   double node_spacing = -1.0;
   bool no_reduction = false;
@@ -356,6 +357,7 @@ void run(const CoordArgs& a) {
   opt.search.ga.three_opt_order = co::parse_three_opt_order(a.ga_three_opt_order);
   opt.search.ga.three_opt_depth = a.ga_three_opt_depth;
   opt.search.ga.three_opt_patience = a.ga_three_opt_patience;
+  opt.search.ga.threads = a.ga_threads;
   opt.search.ga.population = a.ga_population;
   opt.search.edf_reduction = !a.no_reduction;
   const co::CoordinationResult r = co::coordinate(agents, opt);
@@ -516,6 +518,11 @@ void setup(CLI::App& app) {
                   "GA, critical-first: random moves (minus the exact cut) after a local optimum, "
                   "until this many in a row did not improve (0 = none)")
       ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--ga-threads", a->ga_threads,
+                  "GA: 0 = one random stream (earlier results); N >= 1 = per-child streams, the "
+                  "children of a generation on N threads (same result for every N >= 1)")
+      ->check(CLI::Range(0, 64))
       ->capture_default_str();
   cmd->add_option("--ga-population", a->ga_population, "GA: population size (0 = N, the paper's)")
       ->check(non_negative())

@@ -174,5 +174,32 @@ TEST(CriticalMoves, GaCriticalFirstIsDeterministicAndNeverWorseThanTheSeed) {
   }
 }
 
+// Per-child RNG streams: the same result for 1, 2 and 3 threads (whatever the threads' timing),
+// for both 3-opt neighbourhoods.
+TEST(CriticalMoves, GaResultDoesNotDependOnTheThreadCount) {
+  for (const auto order : {ThreeOptOrder::kPaper, ThreeOptOrder::kCriticalFirst}) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      const MdNetwork net = random_network(20, 60, seed);
+      SearchOptions so;
+      so.edf_reduction = false;
+      so.ga.seed = seed;
+      so.ga.three_opt_order = order;
+      so.ga.three_opt_iterations = 100;
+      so.ga.threads = 1;
+      const auto one = search_priority(net, so);
+      for (const int t : {2, 3}) {
+        so.ga.threads = t;
+        const auto r = search_priority(net, so);
+        EXPECT_EQ(r.order, one.order) << seed << " threads " << t;
+        EXPECT_EQ(r.evaluations, one.evaluations);
+        EXPECT_EQ(r.best_per_round, one.best_per_round);
+        EXPECT_EQ(r.three_opt_improvements, one.three_opt_improvements);
+        EXPECT_EQ(r.resolution.delays, one.resolution.delays);
+      }
+      EXPECT_GE(one.generations, 2);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace voronav::coordination

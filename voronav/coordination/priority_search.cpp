@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <random>
 #include <string>
+#include <thread>
 
 #include "voronav/coordination/internal/critical_moves.hpp"
 #include "voronav/coordination/internal/ga_operators.hpp"
@@ -422,6 +424,54 @@ class Ga {
     }
   }
 
+  /// One child of parents pa, pb: DPX, mutation with the mutation rate, 3-opt; every random
+  /// draw from the stream `seed`.
+  Individual make_child(const std::vector<int>& pa, const std::vector<int>& pb,
+                        std::uint64_t seed) {
+    rng_.seed(seed);
+    std::vector<int> child = ops_.dpx(pa, pb, rng_);
+    if (unit() < o_.mutation_rate)
+      child = ops_.mutate(child, o_.mutation_min_edges, o_.mutation_max_edges, rng_);
+    Individual ind = make(std::move(child));
+    three_opt(ind);
+    return ind;
+  }
+
+  /// The children of one generation with per-child RNG streams: the parents and a stream seed per
+  /// child are drawn here (main stream, in child order); child c is made by helper c mod T. The
+  /// result depends on neither T nor the threads' timing.
+  void children_on_threads(const std::vector<Individual>& pop, int pop_size,
+                           std::vector<Individual>& children,
+                           std::vector<std::unique_ptr<Ga>>& helpers) {
+    const int count = o_.crossovers_per_generation;
+    std::vector<int> pa(static_cast<std::size_t>(count)), pb(static_cast<std::size_t>(count));
+    std::vector<std::uint64_t> seeds(static_cast<std::size_t>(count));
+    for (int c = 0; c < count; ++c) {
+      const int a = uniform(0, pop_size - 1);
+      int b = uniform(0, pop_size - 2);
+      if (b >= a) ++b;
+      pa[static_cast<std::size_t>(c)] = a;
+      pb[static_cast<std::size_t>(c)] = b;
+      seeds[static_cast<std::size_t>(c)] = rng_();
+    }
+    children.assign(static_cast<std::size_t>(count), Individual{});
+    const int threads = static_cast<int>(helpers.size());
+    auto work = [&](int t) {
+      for (int c = t; c < count; c += threads) {
+        const auto uc = static_cast<std::size_t>(c);
+        children[uc] = helpers[static_cast<std::size_t>(t)]->make_child(
+            pop[static_cast<std::size_t>(pa[uc])].seq, pop[static_cast<std::size_t>(pb[uc])].seq,
+            seeds[uc]);
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t)
+      pool.emplace_back(work, t);
+    work(0);
+    for (auto& th : pool)
+      th.join();
+  }
+
   SearchResult run(const std::vector<int>& seed_order) {
     SearchResult out;
     out.urgent_group = searched_;
@@ -451,12 +501,21 @@ class Ga {
     }
     auto by_quality = [](const Individual& a, const Individual& b) { return better(a.res, b.res); };
     std::stable_sort(pop.begin(), pop.end(), by_quality);
+    // Per-child RNG streams (threads >= 1): one Ga per thread makes children (its own RNG, reseeded
+    // per child, and its own MoveEvaluator scratch).
+    std::vector<std::unique_ptr<Ga>> helpers;
+    for (int t = 0; t < o_.threads; ++t)
+      helpers.push_back(std::make_unique<Ga>(net_, searched_, suffix_, o_));
     double prev = pop.front().res.makespan;
     const int elite = std::max(1, static_cast<int>(std::ceil(o_.elitism * pop_size)));
     int crossovers = 0;
     while (n_ >= 2 && out.rounds < o_.max_rounds) {
       std::vector<Individual> children;
-      for (int c = 0; c < o_.crossovers_per_generation; ++c) {
+      if (o_.threads > 0) {
+        children_on_threads(pop, pop_size, children, helpers);
+        crossovers += o_.crossovers_per_generation;
+      }
+      for (int c = 0; c < o_.crossovers_per_generation && o_.threads == 0; ++c) {
         const int a = uniform(0, pop_size - 1);
         int b = uniform(0, pop_size - 2);
         if (b >= a) ++b;
@@ -515,6 +574,12 @@ class Ga {
       out.order.push_back(searched_[static_cast<std::size_t>(l)]);
     out.order.insert(out.order.end(), suffix_.begin(), suffix_.end());
     out.resolution = best.res;
+    for (const auto& h : helpers) {
+      evaluations_ += h->evaluations_;
+      improvements_ += h->improvements_;
+      local_optima_ += h->local_optima_;
+      cut_moves_ += h->cut_moves_;
+    }
     out.evaluations = evaluations_;
     out.three_opt_improvements = improvements_;
     out.three_opt_local_optima = local_optima_;
@@ -551,6 +616,7 @@ void check_ga_options(const GaOptions& o) {
   if (o.max_rounds < 1) bad("max_rounds", "expected >= 1");
   if (o.three_opt_depth < 0) bad("three_opt_depth", "expected >= 0");
   if (o.three_opt_patience < 0) bad("three_opt_patience", "expected >= 0");
+  if (o.threads < 0 || o.threads > 64) bad("threads", "expected 0..64");
 }
 
 }  // namespace

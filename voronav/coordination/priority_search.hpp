@@ -100,6 +100,10 @@ struct GaOptions {
   /// evaluated moves in a row did not improve; an improvement returns to the critical moves.
   /// 0 = none.
   int three_opt_patience = 0;
+  /// 0: one RNG stream for the whole GA (the results of earlier versions). >= 1: each child of a
+  /// generation (crossover, mutation, 3-opt) draws from its own stream, seeded from the main one,
+  /// and the children are made on this many threads; the result is the same for every value >= 1.
+  int threads = 0;
 };
 
 struct SearchOptions {
