@@ -631,6 +631,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     Agent& a = *agents[i];
     const Vec2 pos = a.body.true_pose().position;
     BinaryGrid grid = traversable_of(team_grid(team), plan_radius);
+    const field::DistanceField clearance = field::distance_transform(grid);  // without robots
     std::vector<Vec2> others_at;
     for (std::size_t j = 0; j < agents.size(); ++j)
       if (j != i) others_at.push_back(agents[j]->body.true_pose().position);
@@ -638,7 +639,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     std::vector<Vec2> path;
     const auto from = nearest_free(grid, pos, 3);
     if (from && flood.flood(grid, *from, planning::Connectivity::k8) > 0) {
-      const std::optional<Cell> best = unstick_target(grid, flood);
+      const std::optional<Cell> best = unstick_target(grid, flood, clearance);
       if (best) path = descend(grid, flood, *best);
       if (!path.empty()) {
         path.insert(path.begin(), pos);

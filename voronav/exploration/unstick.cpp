@@ -9,11 +9,10 @@
 namespace voronav::exploration {
 
 std::optional<Cell> unstick_target(const BinaryGrid& grid, const planning::BfsFlood& flood,
-                                   const UnstickOptions& o) {
+                                   const field::DistanceField& clear, const UnstickOptions& o) {
   const double res = grid.geometry().resolution;
   const auto lo = static_cast<std::int32_t>(std::ceil(o.min_path / res - 1e-9));
   const auto hi = static_cast<std::int32_t>(std::floor(o.max_path / res + 1e-9));
-  const field::DistanceField clear = field::distance_transform(grid);
   std::optional<Cell> best;
   double best_clear = -1.0;
   std::int32_t best_steps = 0;

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "voronav/core/occupancy.hpp"
+#include "voronav/field/distance_transform.hpp"
 #include "voronav/planning/bfs.hpp"
 
 namespace voronav::exploration {
@@ -19,11 +20,13 @@ struct UnstickOptions {
 
 /// The target cell: among the cells `flood` reached on `grid` (0 = free for a robot centre; the
 /// other robots' discs already blocked, block_robot_discs) with min_path <= path length <=
-/// max_path, the one farthest from any blocked cell of `grid` (capped at clearance_cap; ties:
-/// the shorter path, then the lower cell index). Path length = BFS steps x resolution.
-/// nullopt when no reached cell is in that range (e.g. the robot is boxed in).
+/// max_path, the one with the largest `clearance` (the distance field of the obstacles, without
+/// the robots; capped at clearance_cap; ties: the shorter path, then the lower cell index).
+/// Path length = BFS steps x resolution. nullopt when no reached cell is in that range (e.g. the
+/// robot is boxed in).
 [[nodiscard]] std::optional<Cell> unstick_target(const BinaryGrid& grid,
                                                  const planning::BfsFlood& flood,
+                                                 const field::DistanceField& clearance,
                                                  const UnstickOptions& options = {});
 
 }  // namespace voronav::exploration

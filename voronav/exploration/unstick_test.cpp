@@ -23,7 +23,7 @@ TEST(Unstick, LeavesADeadEndForTheNearestOpenPlace) {
   const BinaryGrid g = corridor_and_room();
   planning::BfsFlood flood;
   ASSERT_GT(flood.flood(g, Cell{1, 10}, planning::Connectivity::k8), 0u);
-  const auto t = unstick_target(g, flood);
+  const auto t = unstick_target(g, flood, field::distance_transform(g));
   ASSERT_TRUE(t.has_value());
   // Clearance 1 m (the cap) needs 10 cells from the walls at column 19 (and from the corridor's
   // corners at rows 8 and 12): first at column 29, 28 steps from column 1. The corridor's cells
@@ -40,7 +40,8 @@ TEST(Unstick, TargetLiesBetweenTheMinimumAndMaximumPathLength) {
   UnstickOptions o;
   o.min_path = 1.0;
   o.max_path = 2.0;
-  const auto t = unstick_target(g, flood, o);
+  const field::DistanceField clear = field::distance_transform(g);
+  const auto t = unstick_target(g, flood, clear, o);
   ASSERT_TRUE(t.has_value());
   const int st = flood.steps(g, *t);
   EXPECT_GE(st, 10);  // never "stay where you are"
@@ -48,11 +49,12 @@ TEST(Unstick, TargetLiesBetweenTheMinimumAndMaximumPathLength) {
   // Too long a minimum: nothing that far is reachable (the room's far corner is 29 steps away).
   o.min_path = 3.5;
   o.max_path = 4.0;
-  EXPECT_FALSE(unstick_target(g, flood, o).has_value());
+  EXPECT_FALSE(unstick_target(g, flood, clear, o).has_value());
 }
 
 TEST(Unstick, BoxedInHasNoTarget) {
   BinaryGrid g = corridor_and_room();
+  const field::DistanceField clear = field::distance_transform(g);  // the walls, not the robots
   // Other robots' discs (as block_robot_discs marks them) close the corridor on both sides.
   for (int y = 9; y <= 11; ++y) {
     g[Cell{3, y}] = 1;
@@ -60,7 +62,7 @@ TEST(Unstick, BoxedInHasNoTarget) {
   }
   planning::BfsFlood flood;
   ASSERT_GT(flood.flood(g, Cell{5, 10}, planning::Connectivity::k8), 0u);
-  EXPECT_FALSE(unstick_target(g, flood).has_value());
+  EXPECT_FALSE(unstick_target(g, flood, clear).has_value());
 }
 
 }  // namespace
