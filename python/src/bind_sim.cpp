@@ -350,7 +350,9 @@ void bind_sim(py::module_& m) {
       .def_readwrite("gain_radius", &ex::ExplorationOptions::gain_radius, "[m]")
       .def_readwrite("stall_time", &ex::ExplorationOptions::stall_time, "[s]")
       .def_readwrite("stall_distance", &ex::ExplorationOptions::stall_distance, "[m]")
-      .def_readwrite("unstick", &ex::ExplorationOptions::unstick, "(CLI --unstick on|off)")
+      .def_readwrite("unstick", &ex::ExplorationOptions::unstick, "tree (CLI --unstick on|off)")
+      .def_readwrite("frontier_unstick", &ex::ExplorationOptions::frontier_unstick,
+                     "frontier methods (CLI --frontier-unstick on|off)")
       .def_readwrite("controller", &ex::ExplorationOptions::controller,
                      "tree: the reactive search's ControllerOptions")
       .def_readwrite("frontier_controller", &ex::ExplorationOptions::frontier_controller,

@@ -76,6 +76,7 @@ class Options:
     stall_time: float  # [s]
     stall_distance: float  # [m]
     unstick: bool
+    frontier_unstick: bool
     controller: ControllerOptions  # tree's reactive search
     frontier_controller: ControllerOptions  # frontier methods' reactive windows
     def __init__(self, **kwargs: object) -> None: ...

@@ -1023,7 +1023,8 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           a.unsticking = false;
         }
         a.reactive_until = t + 10.0;
-        if (o.unstick) unstick(unstick, i, t, true);
+        if (o.method == ExplorationMethod::kTree ? o.unstick : o.frontier_unstick)
+          unstick(unstick, i, t, true);
       }
       if (distance(now, a.anchor) > o.stall_distance) {
         a.anchor = now;
