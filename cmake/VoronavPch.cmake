@@ -1,15 +1,9 @@
 # Precompiled headers for heavy third-party headers that many translation units parse: GoogleTest
 # (every *_test.cpp, about 1.5 s of CPU each). They cut the CPU time of a cold build, which is what
 # CI does (docs/ci.md; a CLI11 + nlohmann/json PCH for the CLI was measured and gave nothing).
-# ccache does not cache a translation unit that uses a PCH unless its sloppiness is relaxed, so the
-# default is OFF when a compiler launcher (ccache) is set; -DVORONAV_PCH=ON|OFF overrides.
-if(CMAKE_CXX_COMPILER_LAUNCHER)
-  set(_voronav_pch_default OFF)
-else()
-  set(_voronav_pch_default ON)
-endif()
-option(VORONAV_PCH "Precompile heavy third-party headers (default ON without a compiler launcher)"
-       ${_voronav_pch_default})
+# It is opt-in (-DVORONAV_PCH=ON): a shared PCH has not yet been through a full cold CI run, and
+# ccache does not cache a translation unit that uses one unless its sloppiness is relaxed.
+option(VORONAV_PCH "Precompile heavy third-party headers (GoogleTest) for the test executables" OFF)
 
 # voronav_precompile(<target> <group> <header>...): the first target of a group compiles the
 # headers into a PCH, later targets of the group reuse it (REUSE_FROM: they must be compiled with
