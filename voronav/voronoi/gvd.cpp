@@ -316,6 +316,68 @@ void DynamicGvd::row_lower(int y, int xa, int xb, const std::vector<int>& cols,
   }
 }
 
+void DynamicGvd::lowered_ranges(int y, int c0, int c1,
+                                std::vector<std::pair<int, int>>* ranges) const {
+  // Cell x of row y can change only when the new site s = (c, sy) of a run column c beats its
+  // old distance: f_c(x) = |p_x - s|^2 - d^2(x) <= 0. With t the old site of x (|p_x - t|^2 =
+  // d^2(x)), g(x') = |p_x' - s|^2 - |p_x' - t|^2 is linear along the row, g(x) = f_c(x), slope
+  // 2 (t_x - c); and d^2(x') <= |p_x' - t|^2 (t was an obstacle), so f_c(x') >= g(x'). Where
+  // f_c(x) > 0 the cells up to where g reaches 0 are skipped (all of them when g grows away
+  // from the run), and where x cannot see c (|x - c|^2 > d^2(x)) no cell beyond can (the
+  // distance is 1-Lipschitz). The cells kept are appended as ranges.
+  std::pair<int, std::int64_t> sites[kMaxHalfPlaneRun];  // (column, squared height of its site)
+  int ns = 0;
+  for (int c = c0; c <= c1; ++c) {
+    const std::size_t ci = pidx(c, y);
+    if (col_d_[ci] >= 0) sites[ns++] = {c, col_d_[ci]};
+  }
+  const std::int64_t* drow = &d2_[pidx(0, y)];
+  const std::int32_t* srow = &site_[pidx(0, y)];
+  constexpr int kAll = std::numeric_limits<int>::max();
+  // Cells from x on (dir = +1 right, -1 left) that no run column can change: 0 when x may
+  // change, kAll when no cell from x on can.
+  auto safe = [&](int x, int dir) {
+    const std::int64_t v = drow[x];
+    if (v < 0) return 0;
+    const int tx = xy(static_cast<std::size_t>(srow[x])).first;
+    int skip = kAll;
+    for (int k = 0; k < ns; ++k) {
+      const auto [c, h2] = sites[k];
+      const std::int64_t dx2 = std::int64_t{x - c} * (x - c);
+      if (dx2 > v) continue;  // x cannot see c, nor can the cells beyond
+      const std::int64_t f = dx2 + h2 - v;
+      if (f <= 0) return 0;
+      const std::int64_t rate = 2 * std::int64_t{dir > 0 ? c - tx : tx - c};  // fall of g per cell
+      if (rate <= 0) continue;
+      skip = static_cast<int>(std::min<std::int64_t>(skip, (f + rate - 1) / rate));
+    }
+    return skip;
+  };
+  for (int dir = -1; dir <= 1; dir += 2) {
+    const int from = dir > 0 ? c1 : c0;
+    int a = from, b = from;  // the piece being grown (from the run's end outwards)
+    if (dir > 0) a = c0;
+    int x = from + dir;
+    while (x >= 0 && x < pw_) {
+      const std::int64_t v = drow[x];
+      if (v >= 0 && std::int64_t{x - from} * (x - from) > v) break;
+      const int k = safe(x, dir);
+      if (k == kAll) break;
+      if (k > 0) {
+        x += dir * k;
+        continue;
+      }
+      if (x != b + dir) {
+        ranges->emplace_back(std::min(a, b), std::max(a, b));
+        a = x;
+      }
+      b = x;
+      x += dir;
+    }
+    ranges->emplace_back(std::min(a, b), std::max(a, b));
+  }
+}
+
 int DynamicGvd::relabel_from(std::size_t seed, std::int32_t id, std::vector<std::size_t>* cells) {
   std::vector<std::int32_t> seen;
   auto note = [&](std::int32_t old) {
@@ -737,6 +799,11 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
         const std::int64_t v = drow[x];
         return v < 0 || std::int64_t{x - xc} * (x - xc) <= v;
       };
+      if (!raised && c1 - c0 < kMaxHalfPlaneRun) {
+        lowered_ranges(y, c0, c1, &ranges);
+        k = e + 1;
+        continue;
+      }
       int l = c0, r = c1;
       while (l > 0 && sees(l - 1, c0))
         --l;

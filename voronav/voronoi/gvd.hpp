@@ -184,6 +184,10 @@ class DynamicGvd {
   // the changed columns' sites for the cells [xa, xb].
   void row_lower(int y, int xa, int xb, const std::vector<int>& cols,
                  std::vector<std::size_t>* changed);
+  // Row y where the run of columns [c0, c1] was lowered (obstacles added, nothing raised in
+  // the row): appends the ranges of cells that a new site of the run can change.
+  static constexpr int kMaxHalfPlaneRun = 8;
+  void lowered_ranges(int y, int c0, int c1, std::vector<std::pair<int, int>>* ranges) const;
   void grow_span(std::unordered_map<int, std::pair<int, int>>& spans, std::size_t i) const;
   void row_pass(int y, int x0, int x1);
   // Recomputes the cells [xa, xb] of row y exactly from the column data (window of columns
