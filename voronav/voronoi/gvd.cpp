@@ -38,15 +38,23 @@ void check_options(const GvdOptions& o) {
 
 // Lower envelope of parabolas (Felzenszwalb & Huttenlocher 2012, Algorithm 1) over integer
 // inputs; f[q] < 0 means "no site in this column". Writes the squared distance (or kNone) and
-// the argmin column.
+// the argmin column for the outputs [lo, hi] (default all n). Columns whose value at the nearest
+// output, f[q] + dist(q, [lo, hi])^2, exceeds `limit` are left out: the caller knows that every
+// output's minimum is at most `limit`, so they are never the argmin (not even in a tie).
 class Envelope {
  public:
   void run(const std::int64_t* f, int n, std::int64_t* d, std::int32_t* arg) {
+    run(f, n, d, arg, 0, n - 1, std::numeric_limits<std::int64_t>::max());
+  }
+  void run(const std::int64_t* f, int n, std::int64_t* d, std::int32_t* arg, int lo, int hi,
+           std::int64_t limit) {
     v_.resize(static_cast<std::size_t>(n));
     z_.resize(static_cast<std::size_t>(n) + 1);
     int k = -1;
     for (int q = 0; q < n; ++q) {
       if (f[q] < 0) continue;
+      const std::int64_t dq = q < lo ? lo - q : (q > hi ? q - hi : 0);
+      if (f[q] > limit - dq * dq) continue;
       if (k < 0) {
         k = 0;
         v_[0] = q;
@@ -78,12 +86,12 @@ class Envelope {
       z_[static_cast<std::size_t>(k) + 1] = HUGE_VAL;
     }
     if (k < 0) {
-      std::fill(d, d + n, kNone);
-      std::fill(arg, arg + n, -1);
+      std::fill(d + lo, d + hi + 1, kNone);
+      std::fill(arg + lo, arg + hi + 1, -1);
       return;
     }
     int j = 0;
-    for (int q = 0; q < n; ++q) {
+    for (int q = lo; q <= hi; ++q) {
       while (z_[static_cast<std::size_t>(j) + 1] < q)
         ++j;
       const int p = v_[static_cast<std::size_t>(j)];
@@ -258,19 +266,25 @@ void DynamicGvd::row_segment(int y, int xa, int xb, std::vector<std::size_t>* ch
     const std::int64_t v = d2_[pidx(u, y)];
     return v < 0 ? HUGE_VAL : std::sqrt(static_cast<double>(v));
   };
+  // D(x) <= min(a + (x - xa + 1), b + (xb + 1 - x)) =: B(x) for the cells x of the segment, so
+  // the nearest column of x lies in [x - B(x), x + B(x)] and no minimum exceeds max B^2.
   const double a = dist(xa - 1), b = dist(xb + 1);
-  const double span = static_cast<double>(xb - xa + 2);
+  const double len = static_cast<double>(xb - xa);
   int c0 = 0, c1 = pw_ - 1;
+  std::int64_t limit = std::numeric_limits<std::int64_t>::max();
   if (a < HUGE_VAL || b < HUGE_VAL) {
-    const double m = a < HUGE_VAL && b < HUGE_VAL ? 0.5 * (a + b + span) : std::min(a, b) + span;
-    const int w = static_cast<int>(std::ceil(m)) + 1;
-    c0 = std::max(0, xa - w);
-    c1 = std::min(pw_ - 1, xb + w);
+    const double reach_l = std::min(a + 1.0, b + len + 1.0);
+    const double reach_r = std::min(b + 1.0, a + len + 1.0);
+    double bmax = std::min(a, b) + len + 1.0;
+    if (a < HUGE_VAL && b < HUGE_VAL) bmax = std::min(bmax, 0.5 * (a + b + len + 2.0));
+    c0 = std::max(0, xa - static_cast<int>(std::ceil(reach_l)) - 1);
+    c1 = std::min(pw_ - 1, xb + static_cast<int>(std::ceil(reach_r)) + 1);
+    limit = static_cast<std::int64_t>(std::ceil((bmax + 0.01) * (bmax + 0.01)));
   }
   const int n = c1 - c0 + 1;
   d.resize(static_cast<std::size_t>(n));
   arg.resize(static_cast<std::size_t>(n));
-  env.run(&col_d_[pidx(c0, y)], n, d.data(), arg.data());
+  env.run(&col_d_[pidx(c0, y)], n, d.data(), arg.data(), xa - c0, xb - c0, limit);
   for (int x = xa; x <= xb; ++x) {
     const std::size_t i = pidx(x, y);
     const auto k = static_cast<std::size_t>(x - c0);
@@ -821,6 +835,10 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
         ranges[++m] = ranges[k];
     }
     ranges.resize(m + 1);
+    constexpr std::uint8_t kOldSiteBit = 4;  // marks old_sites in mark_ during the row
+    if (raised && !lowered)
+      for (const std::int32_t st : old_sites)
+        mark_[static_cast<std::size_t>(st)] |= kOldSiteBit;
     for (const auto& [l, r] : ranges) {
       if (raised && !lowered) {
         // Only raised columns: every other column's candidate is unchanged or worse, so a cell
@@ -829,7 +847,7 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
         // bounded by the unchanged cells around them.
         auto hit = [&](int x) {
           const std::int32_t st = site_[pidx(x, y)];
-          return st >= 0 && std::find(old_sites.begin(), old_sites.end(), st) != old_sites.end();
+          return st >= 0 && (mark_[static_cast<std::size_t>(st)] & kOldSiteBit) != 0;
         };
         for (int x = l; x <= r;) {
           if (!hit(x)) {
@@ -851,6 +869,9 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
         stats.row_cells += static_cast<std::size_t>(r - l + 1);
       }
     }
+    if (raised && !lowered)
+      for (const std::int32_t st : old_sites)
+        mark_[static_cast<std::size_t>(st)] &= static_cast<std::uint8_t>(~kOldSiteBit);
     ++stats.recomputed_rows;
   }
   stats.changed_distances = changed.size();
