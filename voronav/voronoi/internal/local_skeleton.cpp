@@ -3,8 +3,35 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <new>
+
+#include <sys/mman.h>
 
 namespace voronav::voronoi::internal {
+
+namespace {
+constexpr std::size_t kMapBytes = std::size_t{1} << 18;  // larger blocks are mapped
+}  // namespace
+
+void* zeroed_alloc(std::size_t n) {
+  if (n < kMapBytes) {
+    void* p = std::calloc(n, 1);
+    if (!p) throw std::bad_alloc();
+    return p;
+  }
+  void* p = mmap(nullptr, n, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (p == MAP_FAILED) throw std::bad_alloc();
+  return p;
+}
+
+void zeroed_free(void* p, std::size_t n) {
+  if (!p) return;
+  if (n < kMapBytes)
+    std::free(p);
+  else
+    munmap(p, n);
+}
+
 namespace {
 
 // [lo, hi): the index range holding every set cell of `in` (empty: lo == hi). Scans 8 bytes at

@@ -39,9 +39,16 @@
 
 namespace voronav::voronoi::internal {
 
-/// A per-cell array of a trivial type, all bytes zero at the start. It is allocated with calloc,
-/// so a large array gets fresh zero pages from the system: the cells a run never touches cost
-/// no time (a std::vector would write every cell). Copies copy the contents.
+/// Zeroed memory of n bytes: a large block is mapped straight from the system (fresh zero pages,
+/// of which only those touched later cost a page fault); a small one comes from calloc. (calloc
+/// alone does not guarantee this: once the allocator has raised its mapping threshold after a
+/// free, a large block comes from the heap and is cleared page by page.)
+void* zeroed_alloc(std::size_t n);
+void zeroed_free(void* p, std::size_t n);
+
+/// A per-cell array of a trivial type, all bytes zero at the start (zeroed_alloc): the cells a
+/// run never touches cost no time (a std::vector would write every cell). Copies copy the
+/// contents.
 template <class T>
 class ZeroedArray {
   static_assert(std::is_trivially_copyable_v<T>);
@@ -60,8 +67,8 @@ class ZeroedArray {
     data_.reset();
     size_ = 0;
     if (n == 0) return;
-    data_.reset(static_cast<T*>(std::calloc(n, sizeof(T))));
-    if (!data_) throw std::bad_alloc();
+    data_ = std::unique_ptr<T[], Free>(static_cast<T*>(zeroed_alloc(n * sizeof(T))),
+                                       Free{n * sizeof(T)});
     size_ = n;
   }
   [[nodiscard]] std::size_t size() const { return size_; }
@@ -70,7 +77,8 @@ class ZeroedArray {
 
  private:
   struct Free {
-    void operator()(T* p) const { std::free(p); }
+    std::size_t bytes = 0;
+    void operator()(T* p) const { zeroed_free(p, bytes); }
   };
   void copy_from(const ZeroedArray& o) {
     reset(o.size_);
