@@ -13,8 +13,10 @@
 namespace voronav::voronoi {
 namespace {
 
-constexpr std::uint8_t kFreeCell = 0;
-constexpr std::uint8_t kBlockedCell = 1;
+// Blocked is 0: the state array starts zeroed (CellVector), all blocked, and only the box of the
+// non-blocked cells is written.
+constexpr std::uint8_t kBlockedCell = 0;
+constexpr std::uint8_t kFreeCell = 1;
 constexpr std::uint8_t kOutside = 2;
 constexpr std::int64_t kNone = -1;
 
@@ -121,44 +123,57 @@ DynamicGvd::DynamicGvd(const BinaryGrid& blocked, const GvdOptions& options)
   ph_ = geometry_.height + 2;
   inv_pw_ = 1.0 / static_cast<double>(pw_);
   const std::size_t n = static_cast<std::size_t>(pw_) * static_cast<std::size_t>(ph_);
-  state_.assign(n, options.border_is_blocked ? kBlockedCell : kOutside);
-  const auto src = blocked.data();
-  for (int y = 0; y < geometry_.height; ++y) {
-    const std::uint8_t* in =
-        &src[static_cast<std::size_t>(y) * static_cast<std::size_t>(geometry_.width)];
-    std::uint8_t* out = &state_[pidx(1, y + 1)];
-    for (int x = 0; x < geometry_.width; ++x)
-      out[x] = in[x] ? kBlockedCell : kFreeCell;
-  }
+  // Every per-cell array starts zeroed without a write (CellVector): 0 is a blocked cell that is
+  // its own site at distance 0 (col_arg_ and site_ are stored relative to the cell), not in the
+  // raw diagram, of obstacle label 0 (the obstacles around the box, see full_labels). So the
+  // build writes, and the system maps, only the pages of the box below.
+  state_ = internal::CellVector<std::uint8_t>(n);
+  col_d_ = internal::CellVector<std::int64_t>(n);
+  col_arg_ = internal::CellVector<std::int32_t>(n);
+  d2_ = internal::CellVector<std::int64_t>(n);
+  site_ = internal::CellVector<std::int32_t>(n);
+  label_ = internal::CellVector<std::int32_t>(n);
+  raw_ = internal::CellVector<std::uint8_t>(n);
   // Sparse build: every cell outside the bounding box of the non-blocked cells is an obstacle
   // whose own distance is 0, and the obstacles just outside the box shield it from the rest, so
   // the EDT, the labels and the raw diagram are computed inside the box (plus its one-cell frame)
   // only; on a map that is mostly unknown (= blocked) the cost follows the known free area.
+  // (The box never touches the padding ring when the border is blocked; otherwise the ring is
+  // outside-not-obstacle and the box is the whole raster.)
   int bx0 = pw_, by0 = ph_, bx1 = -1, by1 = -1;
-  for (int y = 0; y < ph_; ++y) {
-    const std::uint8_t* row = &state_[pidx(0, y)];
-    int first = -1, lastx = -1;
+  const auto src = blocked.data();
+  if (!options.border_is_blocked) {
+    bx0 = 0, by0 = 0, bx1 = pw_ - 1, by1 = ph_ - 1;
     for (int x = 0; x < pw_; ++x)
-      if (row[x] != kBlockedCell) {
-        if (first < 0) first = x;
-        lastx = x;
-      }
-    if (first < 0) continue;
-    bx0 = std::min(bx0, first), bx1 = std::max(bx1, lastx);
-    by0 = std::min(by0, y), by1 = y;
+      state_[pidx(x, 0)] = kOutside, state_[pidx(x, ph_ - 1)] = kOutside;
+    for (int y = 0; y < ph_; ++y)
+      state_[pidx(0, y)] = kOutside, state_[pidx(pw_ - 1, y)] = kOutside;
+  } else {
+    for (int y = 0; y < geometry_.height; ++y) {
+      const std::uint8_t* in =
+          &src[static_cast<std::size_t>(y) * static_cast<std::size_t>(geometry_.width)];
+      int first = -1, lastx = -1;
+      for (int x = 0; x < geometry_.width; ++x)
+        if (!in[x]) {
+          if (first < 0) first = x;
+          lastx = x;
+        }
+      if (first < 0) continue;
+      bx0 = std::min(bx0, first + 1), bx1 = std::max(bx1, lastx + 1);
+      by0 = std::min(by0, y + 1), by1 = y + 1;
+    }
   }
-  // Outside the box: blocked, its own site. (The box never touches the padding ring when the
-  // border is blocked; otherwise it is the whole raster.)
-  col_d_.assign(n, 0);
-  col_arg_.resize(n);
-  d2_.assign(n, 0);
-  site_.resize(n);
-  for (int y = 0; y < ph_; ++y)
-    std::fill_n(&col_arg_[pidx(0, y)], pw_, y);
-  for (std::size_t i = 0; i < n; ++i)
-    site_[i] = static_cast<std::int32_t>(i);
-  label_.assign(n, -1);
-  raw_.assign(n, 0);
+  if (bx1 >= 0) {
+    const int x0 = std::max(bx0, 1), x1 = std::min(bx1, pw_ - 2);
+    for (int y = std::max(by0, 1); y <= std::min(by1, ph_ - 2); ++y) {
+      const std::uint8_t* in =
+          &src[static_cast<std::size_t>(y - 1) * static_cast<std::size_t>(geometry_.width) +
+               static_cast<std::size_t>(x0 - 1)];
+      std::uint8_t* out = &state_[pidx(x0, y)];
+      for (int x = 0; x <= x1 - x0; ++x)
+        out[x] = in[x] ? kBlockedCell : kFreeCell;
+    }
+  }
   max_d2_ = 0;
   if (bx1 >= 0) {
     for (int x = bx0; x <= bx1; ++x)
@@ -176,7 +191,9 @@ DynamicGvd::DynamicGvd(const BinaryGrid& blocked, const GvdOptions& options)
         const std::size_t i = pidx(x, y);
         raw_[i] = raw_mark(i) ? 1 : 0;
       }
-  build_skeleton();
+  // The raw diagram lies in the box: the skeleton builds scan only its index range.
+  build_skeleton(bx1 >= 0 ? std::pair{pidx(bx0, by0), pidx(bx1, by1) + 1}
+                          : std::pair<std::size_t, std::size_t>{0, 0});
 }
 
 void DynamicGvd::grow_span(std::unordered_map<int, std::pair<int, int>>& spans,
@@ -224,15 +241,16 @@ void DynamicGvd::column_pass(int x, std::vector<ChangedRow>* changed_rows,
       best = above;
     const std::int64_t d = best < 0 ? kNone : std::int64_t{y - best} * (y - best);
     const std::size_t i = pidx(x, y);
-    if (changed_rows && (col_d_[i] != d || col_arg_[i] != best)) {
+    const std::int32_t old_arg = col_arg_of(i, y);
+    if (changed_rows && (col_d_[i] != d || old_arg != best)) {
       // Lowered: the new (distance, row) is lexicographically smaller and exists.
       const bool lowered =
-          d >= 0 && (col_d_[i] < 0 || d < col_d_[i] || (d == col_d_[i] && best < col_arg_[i]));
+          d >= 0 && (col_d_[i] < 0 || d < col_d_[i] || (d == col_d_[i] && best < old_arg));
       changed_rows->push_back(
-          {y, !lowered, col_arg_[i] < 0 ? -1 : static_cast<std::int32_t>(pidx(x, col_arg_[i]))});
+          {y, !lowered, old_arg < 0 ? -1 : static_cast<std::int32_t>(pidx(x, old_arg))});
     }
     col_d_[i] = d;
-    col_arg_[i] = best;
+    set_col_arg(i, y, best);
   }
 }
 
@@ -251,7 +269,7 @@ void DynamicGvd::row_pass(int y, int x0, int x1) {
     const auto k = static_cast<std::size_t>(x - x0);
     const std::int32_t ax = arg[k] < 0 ? -1 : arg[k] + x0;
     d2_[i] = d[k];
-    site_[i] = ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_[pidx(ax, y)]));
+    set_site(i, ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_of(pidx(ax, y), y))));
   }
 }
 
@@ -289,12 +307,13 @@ void DynamicGvd::row_segment(int y, int xa, int xb, std::vector<std::size_t>* ch
     const std::size_t i = pidx(x, y);
     const auto k = static_cast<std::size_t>(x - c0);
     const std::int32_t ax = arg[k] < 0 ? -1 : arg[k] + c0;
-    const std::int32_t s = ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_[pidx(ax, y)]));
-    if (d2_[i] == d[k] && site_[i] == s) continue;
+    const std::int32_t s =
+        ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_of(pidx(ax, y), y)));
+    if (d2_[i] == d[k] && site_of(i) == s) continue;
     changed->push_back(i);
     if (d2_[i] != d[k]) d2_changed_[i] = 1, old_d2_[i] = d2_[i];
     d2_[i] = d[k];
-    site_[i] = s;
+    set_site(i, s);
   }
 }
 
@@ -307,12 +326,14 @@ void DynamicGvd::row_lower(int y, int xa, int xb, const std::vector<int>& cols,
   for (const int xc : cols) {
     const std::size_t ci = pidx(xc, y);
     if (col_d_[ci] < 0) continue;
-    cs.push_back({col_d_[ci], xc, col_arg_[ci], static_cast<std::int32_t>(pidx(xc, col_arg_[ci]))});
+    const std::int32_t sy = col_arg_of(ci, y);
+    cs.push_back({col_d_[ci], xc, sy, static_cast<std::int32_t>(pidx(xc, sy))});
   }
   for (int x = xa; x <= xb; ++x) {
     const std::size_t i = pidx(x, y);
     std::int64_t bd = d2_[i];
-    std::int32_t bs = site_[i];
+    const std::int32_t old_site = site_of(i);
+    std::int32_t bs = old_site;
     for (const LowerCol& c : cs) {
       const std::int64_t dd = std::int64_t{x - c.x} * (x - c.x) + c.d;
       bool better = bd < 0 || dd < bd;
@@ -322,11 +343,11 @@ void DynamicGvd::row_lower(int y, int xa, int xb, const std::vector<int>& cols,
       }
       if (better) bd = dd, bs = c.s;
     }
-    if (bd == d2_[i] && bs == site_[i]) continue;
+    if (bd == d2_[i] && bs == old_site) continue;
     changed->push_back(i);
     if (bd != d2_[i]) d2_changed_[i] = 1, old_d2_[i] = d2_[i];
     d2_[i] = bd;
-    site_[i] = bs;
+    set_site(i, bs);
   }
 }
 
@@ -346,14 +367,14 @@ void DynamicGvd::lowered_ranges(int y, int c0, int c1,
     if (col_d_[ci] >= 0) sites[ns++] = {c, col_d_[ci]};
   }
   const std::int64_t* drow = &d2_[pidx(0, y)];
-  const std::int32_t* srow = &site_[pidx(0, y)];
+  const std::size_t row0 = pidx(0, y);
   constexpr int kAll = std::numeric_limits<int>::max();
   // Cells from x on (dir = +1 right, -1 left) that no run column can change: 0 when x may
   // change, kAll when no cell from x on can.
   auto safe = [&](int x, int dir) {
     const std::int64_t v = drow[x];
     if (v < 0) return 0;
-    const int tx = xy(static_cast<std::size_t>(srow[x])).first;
+    const int tx = xy(static_cast<std::size_t>(site_of(row0 + static_cast<std::size_t>(x)))).first;
     int skip = kAll;
     for (int k = 0; k < ns; ++k) {
       const auto [c, h2] = sites[k];
@@ -428,22 +449,19 @@ void DynamicGvd::full_labels(int bx0, int by0, int bx1, int by1) {
   next_label_ = 0;
   std::vector<std::size_t> cells;
   // Sparse: the obstacle cells outside the box grown by one form one component (the padding
-  // ring is blocked around the box); it is labelled without a flood, then flooded from its
-  // inner frame into the box.
+  // ring is blocked around the box): label 0, which every cell has from the start (label_ is
+  // zeroed); the box and its frame are cleared, then flooded from the frame into the box.
   const int fx0 = bx0 - 1, fy0 = by0 - 1, fx1 = bx1 + 1, fy1 = by1 + 1;
   if (bx1 >= 0 && fx0 >= 0 && fy0 >= 0 && fx1 < pw_ && fy1 < ph_) {
-    const std::int32_t id = next_label_++;
-    std::int64_t count = 0;
-    for (int y = 0; y < ph_; ++y)
-      for (int x = 0; x < pw_; ++x)
-        if (x < fx0 || x > fx1 || y < fy0 || y > fy1) {
-          label_[pidx(x, y)] = id;
-          ++count;
-        }
+    const std::int32_t id = next_label_++;  // 0
+    for (int y = fy0; y <= fy1; ++y)
+      std::fill_n(&label_[pidx(fx0, y)], fx1 - fx0 + 1, -1);
     relabel_from(pidx(fx0, fy0), id, &cells);
-    count += static_cast<std::int64_t>(cells.size());
-    label_size_.push_back(count);
+    const std::int64_t frame = std::int64_t{fx1 - fx0 + 1} * (fy1 - fy0 + 1);
+    label_size_.push_back(std::int64_t{pw_} * ph_ - frame +
+                          static_cast<std::int64_t>(cells.size()));
   } else {
+    std::fill(label_.begin(), label_.end(), -1);
     bx0 = 0, by0 = 0, bx1 = pw_ - 1, by1 = ph_ - 1;
   }
   for (int y = std::max(0, by0 - 1); y <= std::min(ph_ - 1, by1 + 1); ++y)
@@ -657,8 +675,9 @@ bool DynamicGvd::update_labels(const std::vector<std::size_t>& added,
 }
 
 bool DynamicGvd::raw_mark(std::size_t i) const {
-  if (state_[i] != kFreeCell || site_[i] < 0) return false;
-  const auto s = static_cast<std::size_t>(site_[i]);
+  const std::int32_t si = site_of(i);
+  if (state_[i] != kFreeCell || si < 0) return false;
+  const auto s = static_cast<std::size_t>(si);
   double sep2 = -1.0;  // computed when first needed
   const std::ptrdiff_t offs[4] = {1, -1, pw_, -pw_};
   for (const std::ptrdiff_t off : offs) {
@@ -669,9 +688,11 @@ bool DynamicGvd::raw_mark(std::size_t i) const {
       if (label_[s] != label_[j]) return true;  // d_i = 1 = distance to j: exactly equidistant
       continue;
     }
-    if (state_[j] != kFreeCell || site_[j] < 0 || site_[j] == site_[i]) continue;
+    if (state_[j] != kFreeCell) continue;
+    const std::int32_t sj = site_of(j);
+    if (sj < 0 || sj == si) continue;
     if (!(d2_[i] > d2_[j] || (d2_[i] == d2_[j] && i < j))) continue;  // the other one is marked
-    const auto t = static_cast<std::size_t>(site_[j]);
+    const auto t = static_cast<std::size_t>(sj);
     if (label_[s] != label_[t]) return true;
     if (sep2 < 0.0) {
       const double sep =
@@ -694,24 +715,24 @@ double DynamicGvd::max_spur() const {
          1.0;
 }
 
-const std::vector<std::uint8_t>& DynamicGvd::skel() const {
+const internal::CellVector<std::uint8_t>& DynamicGvd::skel() const {
   return thins_.empty() ? raw_ : thins_.back().out();
 }
 
-void DynamicGvd::build_skeleton() {
+void DynamicGvd::build_skeleton(std::pair<std::size_t, std::size_t> span) {
   thins_.clear();
   prunes_.clear();
   if (!options_.thin) return;
   const internal::PaddedRaster r{pw_, ph_};
   thins_.emplace_back(r);
-  thins_.back().build(raw_, d2_);
+  thins_.back().build(raw_, d2_, span);
   if (options_.spur_min_length <= 0.0 && options_.spur_clearance_ratio <= 0.0) return;
   const double min_cells = options_.spur_min_length / geometry_.resolution;
   for (int round = 0; round < options_.prune_rounds; ++round) {
     prunes_.emplace_back(r, min_cells, options_.spur_clearance_ratio);
-    prunes_.back().build(thins_.back().out(), d2_, max_spur());
+    prunes_.back().build(thins_.back().out(), d2_, max_spur(), span);
     thins_.emplace_back(r);
-    thins_.back().build(prunes_.back().out(), d2_);
+    thins_.back().build(prunes_.back().out(), d2_, span);
   }
 }
 
@@ -747,9 +768,9 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
   if (stats.changed_cells == 0) return stats;
   if (mark_.empty()) {  // scratch of the updates, allocated on the first one
     visit_.assign(state_.size(), -1);
-    mark_.assign(state_.size(), 0);
-    d2_changed_.assign(state_.size(), 0);
-    old_d2_.assign(state_.size(), 0);
+    mark_ = internal::CellVector<std::uint8_t>(state_.size());
+    d2_changed_ = internal::CellVector<std::uint8_t>(state_.size());
+    old_d2_ = internal::CellVector<std::int64_t>(state_.size());
   }
 
   // Distance field: recompute the touched columns between the nearest obstacles above and below
@@ -846,7 +867,7 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
         // site of a cell is the site of its column in its row). Those runs are recomputed,
         // bounded by the unchanged cells around them.
         auto hit = [&](int x) {
-          const std::int32_t st = site_[pidx(x, y)];
+          const std::int32_t st = site_of(pidx(x, y));
           return st >= 0 && (mark_[static_cast<std::size_t>(st)] & kOldSiteBit) != 0;
         };
         for (int x = l; x <= r;) {
@@ -911,7 +932,8 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     for (int y = std::max(0, y0 - m); y <= std::min(ph_ - 1, y1 + m); ++y)
       for (int x = std::max(0, x0 - m); x <= std::min(pw_ - 1, x1 + m); ++x) {
         const std::size_t i = pidx(x, y);
-        if (site_[i] >= 0 && (mark_[static_cast<std::size_t>(site_[i])] & 1U)) redo_around(i);
+        const std::int32_t si = site_of(i);
+        if (si >= 0 && (mark_[static_cast<std::size_t>(si)] & 1U)) redo_around(i);
       }
     for (const std::size_t c : relabeled)
       mark_[c] &= static_cast<std::uint8_t>(~1U);
@@ -1005,8 +1027,8 @@ GeneralizedVoronoi DynamicGvd::snapshot() const {
       const std::size_t i = pidx(x + 1, y + 1);
       g.blocked[c] = state_[i] == kBlockedCell ? 1 : 0;
       if (d2_[i] >= 0) g.clearance[c] = static_cast<float>(std::sqrt(static_cast<double>(d2_[i])));
-      if (site_[i] >= 0) {
-        const auto s = static_cast<std::size_t>(site_[i]);
+      if (site_of(i) >= 0) {
+        const auto s = static_cast<std::size_t>(site_of(i));
         g.nearest_site[c] = Cell{static_cast<int>(s % static_cast<std::size_t>(pw_)) - 1,
                                  static_cast<int>(s / static_cast<std::size_t>(pw_)) - 1};
       }
