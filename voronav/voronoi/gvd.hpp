@@ -20,7 +20,10 @@
 //
 // The full build works inside the bounding box of the non-blocked cells only (the cells outside
 // are obstacles at distance 0 shielded by the box's frame; their labels are one component), so on
-// a mostly unknown map its cost follows the known free area, not the grid.
+// a mostly unknown map its cost follows the known free area, not the grid: the per-cell arrays
+// start zeroed without a write (zero encodes "blocked, its own site at distance 0"), so only the
+// pages of the box's rows are written, and freed arrays are kept for the next build
+// (internal::zeroed_alloc).
 //
 // DynamicGvd keeps the state so that changed cells (a door closes, an obstacle moves) update
 // everything locally, in the spirit of the dynamic brushfire of Lau, Sprunk and Burgard (2013):
@@ -28,10 +31,14 @@
 //    data changed only the segment that can see a changed column (|x - x'|^2 <= old d^2, found by
 //    scanning out from the changed columns; the distance is 1-Lipschitz so the scan stops at the
 //    first cell that fails) is recomputed, by the parabola envelope over the columns within the
-//    largest possible new distance (bounded by the unchanged cells just outside the segment); in a
-//    row where every changed column was raised (obstacles removed) only the runs of cells whose
-//    site was in a changed column are recomputed (every other candidate got no better). The
-//    nearest site is the lexicographic minimum of (squared distance, column, row) in both builds;
+//    largest possible new distance (bounded by the unchanged cells just outside the segment, which
+//    also bounds the columns worth entering the envelope); in a row where every changed column
+//    was raised (obstacles removed) only the runs of cells whose site was in a changed column are
+//    recomputed (every other candidate got no better); in a row where every changed column was
+//    lowered (obstacles added) only the cells a new site can beat are: where it does not beat a
+//    cell, |p - s|^2 - |p - t|^2 (t the cell's old site) is linear along the row, so the scan
+//    skips ahead to where it could reach 0 and stops where it only grows. The nearest site is the
+//    lexicographic minimum of (squared distance, column, row) in both builds;
 //  - obstacle labels: added cells take the label they touch; a merge relabels the smaller
 //    components, a split is found by flooding from the remaining neighbours of the removed cells
 //    in turn until at most one flood is unfinished (only the pieces that split off are relabeled);
