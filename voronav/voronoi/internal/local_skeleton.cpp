@@ -14,7 +14,20 @@ namespace voronav::voronoi::internal {
 
 namespace {
 
+// Under AddressSanitizer every block comes from calloc, which it checks (it does not watch
+// mapped memory).
+#if defined(__SANITIZE_ADDRESS__)
+#define VORONAV_ZEROED_CALLOC_ONLY 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define VORONAV_ZEROED_CALLOC_ONLY 1
+#endif
+#endif
+#ifdef VORONAV_ZEROED_CALLOC_ONLY
+constexpr std::size_t kMapBytes = ~std::size_t{0};
+#else
 constexpr std::size_t kMapBytes = std::size_t{1} << 16;     // larger blocks are mapped
+#endif
 constexpr std::size_t kKeepBytes = std::size_t{128} << 20;  // at most this much is kept
 
 // Freed mapped blocks kept for reuse, oldest first (a fresh mapping costs a page fault per page
