@@ -24,10 +24,11 @@ namespace {
 #endif
 #endif
 #ifdef VORONAV_ZEROED_CALLOC_ONLY
-constexpr std::size_t kMapBytes = ~std::size_t{0};
+constexpr bool kCallocOnly = true;
 #else
-constexpr std::size_t kMapBytes = std::size_t{1} << 16;     // larger blocks are mapped
+constexpr bool kCallocOnly = false;
 #endif
+constexpr std::size_t kMapBytes = std::size_t{1} << 16;     // larger blocks are mapped
 constexpr std::size_t kKeepBytes = std::size_t{128} << 20;  // at most this much is kept
 
 // Freed mapped blocks kept for reuse, oldest first (a fresh mapping costs a page fault per page
@@ -47,7 +48,7 @@ BlockCache& block_cache() {
 }  // namespace
 
 void* zeroed_alloc(std::size_t n) {
-  if (n < kMapBytes) {
+  if (kCallocOnly || n < kMapBytes) {
     void* p = std::calloc(n, 1);
     if (!p) throw std::bad_alloc();
     return p;
@@ -71,7 +72,7 @@ void* zeroed_alloc(std::size_t n) {
 
 void zeroed_free(void* p, std::size_t n) {
   if (!p) return;
-  if (n < kMapBytes) {
+  if (kCallocOnly || n < kMapBytes) {
     std::free(p);
     return;
   }
