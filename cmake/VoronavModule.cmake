@@ -42,6 +42,8 @@ function(voronav_add_module)
                                        GTest::gtest_main)
     target_compile_definitions(${t} PRIVATE VORONAV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
     voronav_set_warnings(${t})
+    voronav_precompile(${t} tests <gtest/gtest.h> <algorithm> <cmath> <filesystem> <fstream>
+                       <limits> <map> <random> <string> <vector>)
     gtest_discover_tests(${t} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${M_NAME})
   endif()
 endfunction()

@@ -44,6 +44,10 @@ struct CoordArgs {
   std::string at_start, at_goal;
   std::uint64_t seed = 1;
   int ga_three_opt = 0;
+  std::string ga_three_opt_order = "paper";
+  int ga_three_opt_depth = 2;
+  int ga_three_opt_patience = 0;
+  int ga_threads = 0;
   int ga_population = 0;
   double node_spacing = -1.0;
   bool no_reduction = false;
@@ -350,6 +354,10 @@ void run(const CoordArgs& a) {
   opt.search.kind = co::parse_search_kind(a.search);
   opt.search.ga.seed = a.seed;
   opt.search.ga.three_opt_iterations = a.ga_three_opt;
+  opt.search.ga.three_opt_order = co::parse_three_opt_order(a.ga_three_opt_order);
+  opt.search.ga.three_opt_depth = a.ga_three_opt_depth;
+  opt.search.ga.three_opt_patience = a.ga_three_opt_patience;
+  opt.search.ga.threads = a.ga_threads;
   opt.search.ga.population = a.ga_population;
   opt.search.edf_reduction = !a.no_reduction;
   const co::CoordinationResult r = co::coordinate(agents, opt);
@@ -393,6 +401,10 @@ void run(const CoordArgs& a) {
       {"fallback_paths", planned.fallback_paths},
       {"ga_rounds", r.search.rounds},
       {"evaluations", r.search.evaluations},
+      {"three_opt_order", co::to_string(opt.search.ga.three_opt_order)},
+      {"three_opt_improvements", r.search.three_opt_improvements},
+      {"three_opt_local_optima", r.search.three_opt_local_optima},
+      {"three_opt_exact_cuts", r.search.three_opt_exact_cuts},
       {"at_start", co::to_string(opt.map.at_start)},
       {"at_goal", co::to_string(opt.map.at_goal)},
       {"agents", js_agents},
@@ -492,6 +504,25 @@ void setup(CLI::App& app) {
                 "search all robots, not only the EDF urgent group");
   cmd->add_option("--ga-three-opt", a->ga_three_opt,
                   "GA: 3-opt moves tried per child (0 = N(N-1), the paper's; -1 = no 3-opt)")
+      ->capture_default_str();
+  cmd->add_option("--ga-three-opt-order", a->ga_three_opt_order,
+                  "GA: 3-opt moves: paper (uniform random, the paper's) | critical-first (moves "
+                  "of the last robot and the robots delaying it; stops at a local optimum)")
+      ->capture_default_str();
+  cmd->add_option("--ga-three-opt-depth", a->ga_three_opt_depth,
+                  "GA, critical-first: levels of robots delaying the critical robot whose moves "
+                  "are tried")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--ga-three-opt-patience", a->ga_three_opt_patience,
+                  "GA, critical-first: random moves (minus the exact cut) after a local optimum, "
+                  "until this many in a row did not improve (0 = none)")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--ga-threads", a->ga_threads,
+                  "GA: 0 = one random stream (earlier results); N >= 1 = per-child streams, the "
+                  "children of a generation on N threads (same result for every N >= 1)")
+      ->check(CLI::Range(0, 64))
       ->capture_default_str();
   cmd->add_option("--ga-population", a->ga_population, "GA: population size (0 = N, the paper's)")
       ->check(non_negative())

@@ -30,6 +30,8 @@ struct ExploreArgs {
   std::string tree_leg_replan = "robots";
   std::string avoid_escape = "corridor";
   double random_turn_rate = 0.0;
+  std::string unstick = "on";
+  std::string frontier_unstick = "off";
   std::uint64_t seed = 1;
   std::string start;
   std::filesystem::path out;
@@ -112,6 +114,8 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                 {"tree_leg_replan", a.tree_leg_replan},
                 {"avoid_escape", a.avoid_escape},
                 {"random_turn_rate", a.random_turn_rate},
+                {"unstick", a.unstick},
+                {"frontier_unstick", a.frontier_unstick},
                 {"seed", a.seed},
                 {"stop_at_coverage", a.stop_at}};
   if (!a.start.empty()) {
@@ -147,6 +151,8 @@ void run(const ExploreArgs& a) {
   o.tree_leg_replan = exploration::parse_tree_leg_replan(a.tree_leg_replan);
   o.controller.avoid_escape = robot::parse_avoid_escape(a.avoid_escape);
   o.controller.random_turn_rate = a.random_turn_rate;
+  o.unstick = a.unstick == "on";
+  o.frontier_unstick = a.frontier_unstick == "on";
   o.seed = a.seed;
   o.stop_at_coverage = a.stop_at;
   if (!a.start.empty())
@@ -241,6 +247,16 @@ void setup(CLI::App& app) {
          "(0 = straight ahead while the front is clear, Table 1's CLEAR -> F; the frontier "
          "methods' reactive windows keep 0.4)")
       ->check(finite_range(0.0, 10.0))
+      ->capture_default_str();
+  cmd->add_option("--unstick", args->unstick,
+                  "tree: a robot on one spot for 20 s drives to open space nearby around the "
+                  "other robots (on, ours) or not (off)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--frontier-unstick", args->frontier_unstick,
+                  "frontier, coordinated, tree-frontier: the same (off by default: on willow it "
+                  "stalled more robots)")
+      ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   cmd->add_option("--time", args->time, "Simulated time limit [s]")
       ->check(finite_range(1e-3, 1e6))

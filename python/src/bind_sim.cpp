@@ -256,7 +256,69 @@ void bind_sim(py::module_& m) {
   bind_enum<ex::ExplorationMethod>(xp, "Method",
                                    {{"tree", ex::ExplorationMethod::kTree},
                                     {"frontier", ex::ExplorationMethod::kFrontier},
-                                    {"coordinated", ex::ExplorationMethod::kCoordinated}});
+                                    {"coordinated", ex::ExplorationMethod::kCoordinated},
+                                    {"tree_frontier", ex::ExplorationMethod::kTreeFrontier}});
+  bind_enum<ex::TreeReplan>(
+      xp, "TreeReplan", {{"none", ex::TreeReplan::kNone}, {"robots", ex::TreeReplan::kFromRobots}},
+      "tree: after its leaves a robot searches reactively (none, the paper) "
+      "or gets a new tree rooted where it is (robots; CLI --tree-replan).");
+  bind_enum<ex::TreeLegReplan>(
+      xp, "TreeLegReplan",
+      {{"none", ex::TreeLegReplan::kNone}, {"robots", ex::TreeLegReplan::kAroundRobots}},
+      "tree: a robot blocked on a tree leg skips a waypoint (none) or re-plans the leg around the "
+      "robots near it (robots; CLI --tree-leg-replan).");
+  bind_enum<robot::AvoidEscape>(
+      xp, "AvoidEscape",
+      {{"spin", robot::AvoidEscape::kSpin}, {"corridor", robot::AvoidEscape::kCorridor}},
+      "Reactive rule 2 when no heading clears the front (CLI --avoid-escape).");
+  bind_enum<robot::Table1Variant>(
+      xp, "Table1Variant",
+      {{"paper", robot::Table1Variant::kPaper}, {"corrected", robot::Table1Variant::kCorrected}},
+      "Table 1 as printed (paper) or with its two trapping rows corrected.");
+  py::class_<robot::ReactiveControllerOptions>(
+      xp, "ControllerOptions",
+      "The reactive controller of seed 004 (sections 3.2, Tables 1-2); keywords = fields.")
+      .def(py::init([](const py::kwargs& kw) {
+        robot::ReactiveControllerOptions o;
+        apply_kwargs(o, kw, "explore.ControllerOptions");
+        return o;
+      }))
+      .def_readwrite("table", &robot::ReactiveControllerOptions::table)
+      .def_readwrite("drive_velocity", &robot::ReactiveControllerOptions::drive_velocity, "[m/s]")
+      .def_readwrite("obs_approach", &robot::ReactiveControllerOptions::obs_approach, "[m/s]")
+      .def_readwrite("obs_avoid", &robot::ReactiveControllerOptions::obs_avoid, "[rad/s]")
+      .def_readwrite("approach_dist", &robot::ReactiveControllerOptions::approach_dist, "[m]")
+      .def_readwrite("obs_dist", &robot::ReactiveControllerOptions::obs_dist, "[m]")
+      .def_readwrite("desired_wf_dist", &robot::ReactiveControllerOptions::desired_wf_dist, "[m]")
+      .def_readwrite("wall_detect_dist", &robot::ReactiveControllerOptions::wall_detect_dist, "[m]")
+      .def_readwrite("wall_lost_time", &robot::ReactiveControllerOptions::wall_lost_time, "[s]")
+      .def_readwrite("wall_follow_timeout", &robot::ReactiveControllerOptions::wall_follow_timeout,
+                     "[s] (0 = never)")
+      .def_readwrite("wf_gain", &robot::ReactiveControllerOptions::wf_gain, "[rad/s per m]")
+      .def_readwrite("random_turn_rate", &robot::ReactiveControllerOptions::random_turn_rate,
+                     "[rad/s] (CLI --random-turn-rate)")
+      .def_readwrite("random_period", &robot::ReactiveControllerOptions::random_period, "[s]")
+      .def_readwrite("seed", &robot::ReactiveControllerOptions::seed,
+                     "(the runner sets it per robot)")
+      .def_readwrite("avoid_escape", &robot::ReactiveControllerOptions::avoid_escape)
+      .def_readwrite("escape_after_turn", &robot::ReactiveControllerOptions::escape_after_turn,
+                     "[rad]")
+      .def_readwrite("escape_half_width", &robot::ReactiveControllerOptions::escape_half_width,
+                     "[m]")
+      .def_readwrite("escape_min_length", &robot::ReactiveControllerOptions::escape_min_length,
+                     "[m]")
+      .def_readwrite("escape_max_length", &robot::ReactiveControllerOptions::escape_max_length,
+                     "[m]")
+      .def_readwrite("stuck_time", &robot::ReactiveControllerOptions::stuck_time, "[s] (0 = never)")
+      .def_readwrite("stuck_radius", &robot::ReactiveControllerOptions::stuck_radius, "[m]")
+      .def("__repr__", [](const robot::ReactiveControllerOptions& o) {
+        return "explore.ControllerOptions(random_turn_rate=" + std::to_string(o.random_turn_rate) +
+               ", avoid_escape=" + std::string(robot::to_string(o.avoid_escape)) + ")";
+      });
+  xp.def("tree_search_controller", &ex::tree_search_controller,
+         "The tree method's reactive search: straight ahead while clear, corridor escape.");
+  xp.def("frontier_window_controller", &ex::frontier_window_controller,
+         "The frontier methods' reactive windows: random turns up to 0.4 rad/s, rule 2 spins.");
   py::class_<ex::ExplorationOptions>(xp, "Options", "Exploration options; keywords = fields.")
       .def(py::init([](const py::kwargs& kw) {
         ex::ExplorationOptions o;
@@ -278,6 +340,23 @@ void bind_sim(py::module_& m) {
       .def_readwrite("goal_tolerance", &ex::ExplorationOptions::goal_tolerance, "[m]")
       .def_readwrite("clearance", &ex::ExplorationOptions::clearance, "[m]")
       .def_readwrite("min_cell_size", &ex::ExplorationOptions::min_cell_size, "[m]")
+      .def_readwrite("map_beam_stride", &ex::ExplorationOptions::map_beam_stride)
+      .def_readwrite("tree_replan", &ex::ExplorationOptions::tree_replan)
+      .def_readwrite("tree_leg_replan", &ex::ExplorationOptions::tree_leg_replan)
+      .def_readwrite("hybrid_tree_start_time", &ex::ExplorationOptions::hybrid_tree_start_time,
+                     "[s]")
+      .def_readwrite("hybrid_tree_period", &ex::ExplorationOptions::hybrid_tree_period, "[s]")
+      .def_readwrite("min_leaf_gain", &ex::ExplorationOptions::min_leaf_gain)
+      .def_readwrite("gain_radius", &ex::ExplorationOptions::gain_radius, "[m]")
+      .def_readwrite("stall_time", &ex::ExplorationOptions::stall_time, "[s]")
+      .def_readwrite("stall_distance", &ex::ExplorationOptions::stall_distance, "[m]")
+      .def_readwrite("unstick", &ex::ExplorationOptions::unstick, "tree (CLI --unstick on|off)")
+      .def_readwrite("frontier_unstick", &ex::ExplorationOptions::frontier_unstick,
+                     "frontier methods (CLI --frontier-unstick on|off)")
+      .def_readwrite("controller", &ex::ExplorationOptions::controller,
+                     "tree: the reactive search's ControllerOptions")
+      .def_readwrite("frontier_controller", &ex::ExplorationOptions::frontier_controller,
+                     "frontier methods: their reactive windows' ControllerOptions")
       .def("__repr__", [](const ex::ExplorationOptions& o) {
         return "explore.Options(method=" + std::string(ex::to_string(o.method)) +
                ", robots=" + std::to_string(o.robots) + ")";

@@ -88,3 +88,33 @@ def test_figure_to_rgb_and_save(tmp_path):
         fig.save(str(tmp_path / "fig.jpg"))
     with pytest.raises(vn.Error, match="color"):
         fig.point((1.0, 1.0), color="mauve")
+
+
+def test_explore_options_match_the_cli(cli):
+    """Every controller and re-planning option the CLI has is an explore.Options field, and the
+    same settings give the same run (issue 14). The values differ from the defaults, so a field
+    that is ignored or bound to the wrong member changes the result."""
+    o = vn.explore.Options(method="tree", robots=2, time_limit=60.0, seed=3, tree_start_time=20.0,
+                           start=vn.Vec2(2.0, 2.0))
+    assert o.controller.random_turn_rate == 0.0 and o.controller.avoid_escape == vn.explore.AvoidEscape.corridor
+    assert o.frontier_controller.random_turn_rate == pytest.approx(0.4)
+    assert o.frontier_controller.avoid_escape == vn.explore.AvoidEscape.spin
+    o.tree_replan = "robots"
+    o.tree_leg_replan = "none"
+    o.unstick = False
+    o.controller.random_turn_rate = 0.3  # in place: the field is the options' own member
+    o.controller.avoid_escape = "spin"
+    assert o.controller.random_turn_rate == pytest.approx(0.3)
+    res = vn.explore.run(vn.explore.paper_world(), o)
+    got = cli("explore", "--world", "paper", "--robots", "2", "--time", "60", "--seed", "3",
+              "--tree-start", "20", "--tree-replan", "robots", "--tree-leg-replan", "none",
+              "--unstick", "off", "--random-turn-rate", "0.3", "--avoid-escape", "spin")
+    for key in ("coverage", "distance_m", "feature_points", "leaves", "dispatches", "escapes",
+                "unsticks", "collisions"):
+        assert res[key] == pytest.approx(got[key], rel=1e-5), key
+    default = vn.explore.run(vn.explore.paper_world(), method="tree", robots=2, time_limit=60.0,
+                             seed=3, tree_start_time=20.0, start=vn.Vec2(2.0, 2.0))
+    assert default["distance_m"] != pytest.approx(res["distance_m"], rel=1e-6)
+    with pytest.raises(vn.Error, match="unknown option"):
+        vn.explore.ControllerOptions(random_turn=1.0)
+    assert vn.explore.Method("tree_frontier") == vn.explore.Method.tree_frontier

@@ -8,6 +8,47 @@ class Method(Enum):
     tree = ...
     frontier = ...
     coordinated = ...
+    tree_frontier = ...
+
+class TreeReplan(Enum):
+    none = ...
+    robots = ...
+
+class TreeLegReplan(Enum):
+    none = ...
+    robots = ...
+
+class AvoidEscape(Enum):
+    spin = ...
+    corridor = ...
+
+class Table1Variant(Enum):
+    paper = ...
+    corrected = ...
+
+class ControllerOptions:
+    table: Table1Variant
+    drive_velocity: float  # [m/s]
+    obs_approach: float  # [m/s]
+    obs_avoid: float  # [rad/s]
+    approach_dist: float  # [m]
+    obs_dist: float  # [m]
+    desired_wf_dist: float  # [m]
+    wall_detect_dist: float  # [m]
+    wall_lost_time: float  # [s]
+    wall_follow_timeout: float  # [s] (0 = never)
+    wf_gain: float  # [rad/s per m]
+    random_turn_rate: float  # [rad/s]
+    random_period: float  # [s]
+    seed: int
+    avoid_escape: AvoidEscape
+    escape_after_turn: float  # [rad]
+    escape_half_width: float  # [m]
+    escape_min_length: float  # [m]
+    escape_max_length: float  # [m]
+    stuck_time: float  # [s] (0 = never)
+    stuck_radius: float  # [m]
+    def __init__(self, **kwargs: object) -> None: ...
 
 class Options:
     method: Method
@@ -25,7 +66,22 @@ class Options:
     goal_tolerance: float  # [m]
     clearance: float  # [m]
     min_cell_size: float  # [m]
+    map_beam_stride: int
+    tree_replan: TreeReplan
+    tree_leg_replan: TreeLegReplan
+    hybrid_tree_start_time: float  # [s]
+    hybrid_tree_period: float  # [s]
+    min_leaf_gain: float
+    gain_radius: float  # [m]
+    stall_time: float  # [s]
+    stall_distance: float  # [m]
+    unstick: bool
+    frontier_unstick: bool
+    controller: ControllerOptions  # tree's reactive search
+    frontier_controller: ControllerOptions  # frontier methods' reactive windows
     def __init__(self, **kwargs: object) -> None: ...
 
 def run(world: OccupancyGrid, options: Optional[Options] = ..., include_recording: bool = ..., **kwargs: object) -> Dict[str, Any]: ...
+def tree_search_controller() -> ControllerOptions: ...
+def frontier_window_controller() -> ControllerOptions: ...
 def paper_world(resolution: float = ...) -> OccupancyGrid: ...

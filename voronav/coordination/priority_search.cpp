@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <random>
 #include <string>
+#include <thread>
 
+#include "voronav/coordination/internal/critical_moves.hpp"
 #include "voronav/coordination/internal/ga_operators.hpp"
 #include "voronav/core/error.hpp"
 
@@ -115,6 +118,17 @@ std::string_view to_string(SearchKind k) {
       return "ga";
   }
   return "?";
+}
+
+std::string_view to_string(ThreeOptOrder o) {
+  return o == ThreeOptOrder::kPaper ? "paper" : "critical-first";
+}
+
+ThreeOptOrder parse_three_opt_order(std::string_view s) {
+  if (s == "paper") return ThreeOptOrder::kPaper;
+  if (s == "critical-first") return ThreeOptOrder::kCriticalFirst;
+  throw Error("--ga-three-opt-order", 0,
+              "expected paper|critical-first, got '" + std::string(s) + "'");
 }
 
 SearchKind parse_search_kind(std::string_view s) {
@@ -300,30 +314,162 @@ class Ga {
   int uniform(int lo, int hi) { return internal::uniform(rng_, lo, hi); }
   double unit() { return std::uniform_real_distribution<double>(0.0, 1.0)(rng_); }
 
+  int three_opt_budget() const {
+    return o_.three_opt_iterations > 0 ? o_.three_opt_iterations : n_ * (n_ - 1);
+  }
+
+  /// Evaluates the move seq -> cand (positions [from, to) differ) and takes it when better.
+  bool try_move(Individual& ind, std::vector<int>& cand, std::vector<int>& base_order,
+                std::vector<int>& cand_order, int from, int to) {
+    // Only positions [from, to) change robots: the evaluator resolves again only the robots
+    // whose higher neighbours changed (MoveEvaluator), and stops as soon as the candidate's
+    // makespan exceeds the current one (it cannot be better then).
+    full_order(cand, cand_order);
+    ++evaluations_;
+    Resolution r =
+        evaluator_.resolve_move(base_order, ind.res, cand_order, from, to, ind.res.makespan + kEps);
+    if (r.cut || !better(r, ind.res)) return false;
+    ind.seq.swap(cand);
+    ind.res = std::move(r);
+    base_order.swap(cand_order);
+    ++improvements_;
+    return true;
+  }
+
   /// 3-opt for the asymmetric case: move a segment to another place without reversing it
   /// (the only 3-opt move that keeps every edge's direction). First improvement, random moves.
-  void three_opt(Individual& ind) {
-    if (n_ < 3 || o_.three_opt_iterations < 0) return;
-    const int iters = o_.three_opt_iterations > 0 ? o_.three_opt_iterations : n_ * (n_ - 1);
+  /// With `until_feasible`, stops as soon as the order has a delay schedule.
+  int three_opt_random(Individual& ind, int budget, bool until_feasible) {
     std::vector<int> cand;
     std::vector<int> base_order, cand_order;
     full_order(ind.seq, base_order);
-    int from = 0, to = 0;
-    for (int it = 0; it < iters; ++it) {
+    int from = 0, to = 0, it = 0;
+    for (; it < budget; ++it) {
+      if (until_feasible && ind.res.status == ResolveStatus::kOk) break;
       if (!internal::GaOperators::segment_move(ind.seq, rng_, cand, from, to)) continue;
-      // Only positions [from, to) change robots: the evaluator resolves again only the robots
-      // whose higher neighbours changed (MoveEvaluator), and stops as soon as the candidate's
-      // makespan exceeds the current one (it cannot be better then).
-      full_order(cand, cand_order);
-      ++evaluations_;
-      Resolution r = evaluator_.resolve_move(base_order, ind.res, cand_order, from, to,
-                                             ind.res.makespan + kEps);
-      if (!r.cut && better(r, ind.res)) {
-        ind.seq.swap(cand);
-        ind.res = std::move(r);
-        base_order.swap(cand_order);
-      }
+      try_move(ind, cand, base_order, cand_order, from, to);
     }
+    return it;
+  }
+
+  /// Critical-first 3-opt (ThreeOptOrder::kCriticalFirst): the moves of critical_moves() in
+  /// order, first improvement, until none improves (a local optimum) or the budget is spent.
+  void three_opt_critical(Individual& ind) {
+    int budget = three_opt_budget();
+    std::vector<int> cand, base_order, cand_order;
+    std::vector<int> rank(static_cast<std::size_t>(net_.size()), 0);
+    int from = 0, to = 0;
+    while (budget > 0) {
+      full_order(ind.seq, base_order);
+      for (int p = 0; p < net_.size(); ++p)
+        rank[static_cast<std::size_t>(base_order[static_cast<std::size_t>(p)])] = p;
+      const auto moves = internal::critical_moves(net_, n_, rank, ind.res, o_.three_opt_depth);
+      bool improved = false;
+      for (const auto& mv : moves) {
+        if (budget <= 0) break;
+        --budget;
+        internal::apply_segment_move(ind.seq, mv, cand, from, to);
+        if (try_move(ind, cand, base_order, cand_order, from, to)) {
+          improved = true;
+          break;
+        }
+      }
+      if (improved) continue;
+      if (ind.res.status != ResolveStatus::kOk) {
+        // No listed move gives a delay schedule: random moves until one does.
+        budget -= three_opt_random(ind, budget, true);
+        if (ind.res.status == ResolveStatus::kOk) continue;
+      }
+      if (budget > 0 && o_.three_opt_patience > 0 && ind.res.status == ResolveStatus::kOk &&
+          random_phase(ind, rank, base_order, budget)) {
+        continue;
+      }
+      if (budget > 0) ++local_optima_;
+      break;
+    }
+  }
+
+  /// Random segment moves that the exact cut cannot exclude, until one improves (true) or
+  /// three_opt_patience evaluated moves in a row did not, or the budget is spent.
+  bool random_phase(Individual& ind, const std::vector<int>& rank, std::vector<int>& base_order,
+                    int& budget) {
+    const int c = internal::critical_robot(ind.res, rank);
+    if (c < 0) return false;
+    internal::support_of(net_, rank, c, in_support_);
+    std::vector<int> cand, cand_order;
+    int fails = 0, from = 0, to = 0;
+    internal::SegmentMove mv;
+    while (budget > 0 && fails < o_.three_opt_patience) {
+      --budget;
+      if (!internal::random_segment_move(n_, rng_, mv)) continue;
+      const auto bl = internal::swapped_blocks(mv);
+      if (!internal::can_lower_makespan(net_, base_order, in_support_, bl.a_begin, bl.a_end,
+                                        bl.b_end, scratch_)) {
+        ++cut_moves_;
+        continue;
+      }
+      internal::apply_segment_move(ind.seq, mv, cand, from, to);
+      if (try_move(ind, cand, base_order, cand_order, from, to)) return true;
+      ++fails;
+    }
+    return false;
+  }
+
+  void three_opt(Individual& ind) {
+    if (n_ < 3 || o_.three_opt_iterations < 0) return;
+    if (o_.three_opt_order == ThreeOptOrder::kCriticalFirst) {
+      three_opt_critical(ind);
+    } else {
+      three_opt_random(ind, three_opt_budget(), false);
+    }
+  }
+
+  /// One child of parents pa, pb: DPX, mutation with the mutation rate, 3-opt; every random
+  /// draw from the stream `seed`.
+  Individual make_child(const std::vector<int>& pa, const std::vector<int>& pb,
+                        std::uint64_t seed) {
+    rng_.seed(seed);
+    std::vector<int> child = ops_.dpx(pa, pb, rng_);
+    if (unit() < o_.mutation_rate)
+      child = ops_.mutate(child, o_.mutation_min_edges, o_.mutation_max_edges, rng_);
+    Individual ind = make(std::move(child));
+    three_opt(ind);
+    return ind;
+  }
+
+  /// The children of one generation with per-child RNG streams: the parents and a stream seed per
+  /// child are drawn here (main stream, in child order); child c is made by helper c mod T. The
+  /// result depends on neither T nor the threads' timing.
+  void children_on_threads(const std::vector<Individual>& pop, int pop_size,
+                           std::vector<Individual>& children,
+                           std::vector<std::unique_ptr<Ga>>& helpers) {
+    const int count = o_.crossovers_per_generation;
+    std::vector<int> pa(static_cast<std::size_t>(count)), pb(static_cast<std::size_t>(count));
+    std::vector<std::uint64_t> seeds(static_cast<std::size_t>(count));
+    for (int c = 0; c < count; ++c) {
+      const int a = uniform(0, pop_size - 1);
+      int b = uniform(0, pop_size - 2);
+      if (b >= a) ++b;
+      pa[static_cast<std::size_t>(c)] = a;
+      pb[static_cast<std::size_t>(c)] = b;
+      seeds[static_cast<std::size_t>(c)] = rng_();
+    }
+    children.assign(static_cast<std::size_t>(count), Individual{});
+    const int threads = static_cast<int>(helpers.size());
+    auto work = [&](int t) {
+      for (int c = t; c < count; c += threads) {
+        const auto uc = static_cast<std::size_t>(c);
+        children[uc] = helpers[static_cast<std::size_t>(t)]->make_child(
+            pop[static_cast<std::size_t>(pa[uc])].seq, pop[static_cast<std::size_t>(pb[uc])].seq,
+            seeds[uc]);
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t)
+      pool.emplace_back(work, t);
+    work(0);
+    for (auto& th : pool)
+      th.join();
   }
 
   SearchResult run(const std::vector<int>& seed_order) {
@@ -355,12 +501,21 @@ class Ga {
     }
     auto by_quality = [](const Individual& a, const Individual& b) { return better(a.res, b.res); };
     std::stable_sort(pop.begin(), pop.end(), by_quality);
+    // Per-child RNG streams (threads >= 1): one Ga per thread makes children (its own RNG, reseeded
+    // per child, and its own MoveEvaluator scratch).
+    std::vector<std::unique_ptr<Ga>> helpers;
+    for (int t = 0; t < o_.threads; ++t)
+      helpers.push_back(std::make_unique<Ga>(net_, searched_, suffix_, o_));
     double prev = pop.front().res.makespan;
     const int elite = std::max(1, static_cast<int>(std::ceil(o_.elitism * pop_size)));
     int crossovers = 0;
     while (n_ >= 2 && out.rounds < o_.max_rounds) {
       std::vector<Individual> children;
-      for (int c = 0; c < o_.crossovers_per_generation; ++c) {
+      if (o_.threads > 0) {
+        children_on_threads(pop, pop_size, children, helpers);
+        crossovers += o_.crossovers_per_generation;
+      }
+      for (int c = 0; c < o_.crossovers_per_generation && o_.threads == 0; ++c) {
         const int a = uniform(0, pop_size - 1);
         int b = uniform(0, pop_size - 2);
         if (b >= a) ++b;
@@ -419,7 +574,16 @@ class Ga {
       out.order.push_back(searched_[static_cast<std::size_t>(l)]);
     out.order.insert(out.order.end(), suffix_.begin(), suffix_.end());
     out.resolution = best.res;
+    for (const auto& h : helpers) {
+      evaluations_ += h->evaluations_;
+      improvements_ += h->improvements_;
+      local_optima_ += h->local_optima_;
+      cut_moves_ += h->cut_moves_;
+    }
     out.evaluations = evaluations_;
+    out.three_opt_improvements = improvements_;
+    out.three_opt_local_optima = local_optima_;
+    out.three_opt_exact_cuts = cut_moves_;
     return out;
   }
 
@@ -433,6 +597,10 @@ class Ga {
   internal::GaOperators ops_;
   MoveEvaluator evaluator_;
   std::size_t evaluations_ = 0;
+  std::size_t improvements_ = 0;
+  std::size_t local_optima_ = 0;
+  std::size_t cut_moves_ = 0;
+  std::vector<char> in_support_, scratch_;
 };
 
 void check_ga_options(const GaOptions& o) {
@@ -446,6 +614,9 @@ void check_ga_options(const GaOptions& o) {
   }
   if (!(o.convergence >= 0.0)) bad("convergence", "expected >= 0");
   if (o.max_rounds < 1) bad("max_rounds", "expected >= 1");
+  if (o.three_opt_depth < 0) bad("three_opt_depth", "expected >= 0");
+  if (o.three_opt_patience < 0) bad("three_opt_patience", "expected >= 0");
+  if (o.threads < 0 || o.threads > 64) bad("threads", "expected 0..64");
 }
 
 }  // namespace

@@ -59,6 +59,21 @@ enum class SearchKind { kNone, kExhaustive, kEdf, kGa };
 /// Parses "none", "exhaustive", "edf", "ga"; throws voronav::Error otherwise.
 [[nodiscard]] SearchKind parse_search_kind(std::string_view s);
 
+/// Which 3-opt moves the GA tries on a child (issue #16; docs/reproductions/coordination.md).
+enum class ThreeOptOrder {
+  /// The paper's: N (N - 1) uniform random segment moves, first improvement (section 5.1 caps the
+  /// "iterations" at N (N - 1); each tried move is one iteration here).
+  kPaper,
+  /// Moves that lift the critical robot (the last to arrive) and the robots delaying it above a
+  /// blocker, or drop a blocker below it (internal/critical_moves.hpp), first improvement, again
+  /// from the new critical robot after each improvement; stops at a local optimum of this
+  /// neighbourhood or at the same N (N - 1) cap.
+  kCriticalFirst,
+};
+[[nodiscard]] std::string_view to_string(ThreeOptOrder o);
+/// Parses "paper", "critical-first"; throws voronav::Error otherwise.
+[[nodiscard]] ThreeOptOrder parse_three_opt_order(std::string_view s);
+
 /// Genetic algorithm parameters; defaults are the paper's (section 5.1, 5.2.2).
 struct GaOptions {
   std::uint64_t seed = 1;
@@ -77,6 +92,18 @@ struct GaOptions {
   int population = 0;
   /// 3-opt attempts per child; 0 = N (N - 1) as in the paper; < 0 disables 3-opt.
   int three_opt_iterations = 0;
+  ThreeOptOrder three_opt_order = ThreeOptOrder::kPaper;
+  /// kCriticalFirst: levels of "robots delaying the critical robot" whose moves are listed.
+  int three_opt_depth = 2;
+  /// kCriticalFirst: at a local optimum of the critical moves, random segment moves follow (the
+  /// paper's draw, minus the moves the exact cut proves cannot lower the makespan) until this many
+  /// evaluated moves in a row did not improve; an improvement returns to the critical moves.
+  /// 0 = none.
+  int three_opt_patience = 0;
+  /// 0: one RNG stream for the whole GA (the results of earlier versions). >= 1: each child of a
+  /// generation (crossover, mutation, 3-opt) draws from its own stream, seeded from the main one,
+  /// and the children are made on this many threads; the result is the same for every value >= 1.
+  int threads = 0;
 };
 
 struct SearchOptions {
@@ -92,11 +119,14 @@ struct SearchOptions {
 struct SearchResult {
   std::vector<int> order;  ///< highest priority first
   Resolution resolution;
-  std::vector<int> urgent_group;       ///< the robots that were searched
-  std::size_t evaluations = 0;         ///< orders resolved
-  int rounds = 0;                      ///< GA rounds until convergence
-  int generations = 0;                 ///< GA generations
-  std::vector<double> best_per_round;  ///< GA best makespan after each round
+  std::vector<int> urgent_group;           ///< the robots that were searched
+  std::size_t evaluations = 0;             ///< orders resolved
+  int rounds = 0;                          ///< GA rounds until convergence
+  int generations = 0;                     ///< GA generations
+  std::vector<double> best_per_round;      ///< GA best makespan after each round
+  std::size_t three_opt_improvements = 0;  ///< 3-opt moves accepted (all children)
+  std::size_t three_opt_local_optima = 0;  ///< children whose 3-opt ended at a local optimum
+  std::size_t three_opt_exact_cuts = 0;    ///< random moves skipped: they cannot lower the makespan
 };
 
 /// True when (makespan, sum_of_arrivals) of a is better than b (with a 1e-9 tolerance).

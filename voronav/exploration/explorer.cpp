@@ -11,6 +11,7 @@
 
 #include "voronav/core/error.hpp"
 #include "voronav/core/stepper.hpp"
+#include "voronav/exploration/unstick.hpp"
 #include "voronav/field/distance_transform.hpp"
 #include "voronav/mapping/occupancy_map.hpp"
 #include "voronav/planning/bfs.hpp"
@@ -55,6 +56,7 @@ struct Agent {
   bool stalled = false;
   double leg_replan_t = -1e9;  // [s] last TreeLegReplan::kAroundRobots re-plan, and where
   Vec2 leg_replan_at;
+  bool unsticking = false;  // following an unstick route (ExplorationOptions::unstick)
 };
 
 OccupancyGrid team_grid(const mapping::OccupancyMap& m) {
@@ -385,6 +387,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     a.mode = a.route.empty() ? AgentMode::kReactive : AgentMode::kFollow;
     a.blocked_time = 0.0;
     a.since_progress = 0.0;
+    a.unsticking = false;
   };
 
   // --- tree dispatch (seed 004) ---
@@ -616,6 +619,67 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     return true;
   };
 
+  // ExplorationOptions::unstick (ours, every method): a robot that the progress watchdog finds on
+  // one spot drives to open space nearby: on the team map's known-free cells (inflated by the
+  // body radius + clearance) with the discs of the robots within kRobotAwareRange blocked, the
+  // reachable cell 1-4 m of path away with the most clearance (unstick_target, unstick.hpp).
+  // When no such cell is reachable (boxed in by robots), the robots touching it move away the
+  // same way. Traced on willow with 16 robots (issue 14): a robot in a small room with three
+  // robots at its door, and one between map speckle and two robots, dithered in avoid turns and
+  // 1 m corridor escapes for 60 s (stalled).
+  const auto unstick = [&](auto&& self, std::size_t i, double t, bool ask_others) -> bool {
+    Agent& a = *agents[i];
+    const Vec2 pos = a.body.true_pose().position;
+    BinaryGrid grid = traversable_of(team_grid(team), plan_radius);
+    const field::DistanceField clearance = field::distance_transform(grid);  // without robots
+    std::vector<Vec2> others_at;
+    for (std::size_t j = 0; j < agents.size(); ++j)
+      if (j != i) others_at.push_back(agents[j]->body.true_pose().position);
+    (void)block_robot_discs(grid, pos, others_at, 2.0 * body + 0.05, kRobotAwareRange);
+    std::vector<Vec2> path;
+    const auto from = nearest_free(grid, pos, 3);
+    if (from && flood.flood(grid, *from, planning::Connectivity::k8) > 0) {
+      const std::optional<Cell> best = unstick_target(grid, flood, clearance);
+      if (best) path = descend(grid, flood, *best);
+      if (!path.empty()) {
+        path.insert(path.begin(), pos);
+        path = simplify(grid, path);
+      }
+    }
+    if (path.size() >= 2) {
+      start_follow(a, std::move(path));
+      a.unsticking = true;
+      a.on_tree = false;
+      a.goal.reset();
+      a.goal_leaf = false;
+      a.reactive_until = 0.0;
+      ++result.unsticks;
+      log_event(t, a, "unstick");
+      return true;
+    }
+    if (ask_others)
+      for (std::size_t j = 0; j < agents.size(); ++j)
+        if (j != i && !agents[j]->unsticking &&
+            distance(agents[j]->body.true_pose().position, pos) < 2.0 * body + 0.3)
+          self(self, j, t, false);
+    return false;
+  };
+  // The end of an unstick route: a robot with tree legs left goes on with the next one, planned
+  // from where it is; else it searches reactively (and the frontier methods allocate again).
+  const auto end_unstick = [&](Agent& a, double t) {
+    a.unsticking = false;
+    a.route.clear();
+    a.mode = AgentMode::kReactive;
+    if (a.legs.empty()) return;
+    const BinaryGrid opt = tree_grid(team_grid(team), plan_radius);
+    std::vector<Vec2> path = path_on(opt, a.body.true_pose().position, a.legs.front().back());
+    if (path.size() >= 2 && distance(path.back(), a.legs.front().back()) <= 0.5)
+      a.legs.front() = std::move(path);
+    else
+      a.legs.pop_front();  // the leaf is out of reach from here: give it up
+    start_leg(a, t);
+  };
+
   // kTreeFrontier (ours): the current tree's leaves, rebuilt every hybrid_tree_period from all
   // feature points on the team map (only known obstacles block), rooted at the team's start.
   std::vector<Vec2> leaf_goals;
@@ -656,7 +720,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   const auto replan_frontiers = [&] {
     std::vector<std::size_t> active;
     for (std::size_t i = 0; i < agents.size(); ++i)
-      active.push_back(i);
+      if (!agents[i]->unsticking) active.push_back(i);
     const OccupancyGrid tg = team_grid(team);
     trav = traversable_of(tg, plan_radius);
     std::vector<Frontier> fr = find_frontiers(tg, trav, o.frontier);
@@ -814,7 +878,8 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       }
       if (dispatched && o.tree_replan == TreeReplan::kFromRobots)
         for (std::size_t i = 0; i < agents.size(); ++i)
-          if (agents[i]->tree_done && !agents[i]->on_tree && t >= agents[i]->retry_at)
+          if (agents[i]->tree_done && !agents[i]->on_tree && t >= agents[i]->retry_at &&
+              !agents[i]->unsticking)
             replan_from_robot(i, t);
     } else if (t >= next_replan) {
       replan_frontiers();
@@ -858,6 +923,8 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           a.goal_leaf = false;
           if (a.on_tree) {
             finish_leg(a, t);
+          } else if (a.unsticking) {
+            end_unstick(a, t);
           } else {
             a.mode = AgentMode::kReactive;
           }
@@ -897,7 +964,9 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
             a.reactive_until = t + 5.0;
             a.blocked_time = 0.0;
             a.since_progress = 0.0;
-            if (!a.on_tree) {
+            if (a.unsticking) {
+              end_unstick(a, t);
+            } else if (!a.on_tree) {
               if (a.goal) a.blacklist.push_back(*a.goal);
               a.goal.reset();
               a.route.clear();
@@ -951,8 +1020,11 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           a.goal.reset();
           a.route.clear();
           a.mode = AgentMode::kReactive;
+          a.unsticking = false;
         }
         a.reactive_until = t + 10.0;
+        if (o.method == ExplorationMethod::kTree ? o.unstick : o.frontier_unstick)
+          unstick(unstick, i, t, true);
       }
       if (distance(now, a.anchor) > o.stall_distance) {
         a.anchor = now;
@@ -1028,7 +1100,7 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"leaves_reached\":" << r.leaves_reached << ",\"frontier_goals\":" << r.frontier_goals
      << ",\"leaf_goals\":" << r.leaf_goals << ",\"stalled_robots\":" << r.stalled_robots
      << ",\"watchdog_events\":" << r.watchdog_events << ",\"leg_replans\":" << r.leg_replans
-     << ",\"escapes\":" << r.escapes
+     << ",\"escapes\":" << r.escapes << ",\"unsticks\":" << r.unsticks
      << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;
   if (include_recording) {

@@ -100,6 +100,15 @@ struct ExplorationOptions {
   /// while reachable unknown space remains (coverage < 0.99).
   double stall_time = 60.0;
   double stall_distance = 0.5;
+  /// Ours, kTree: a robot the progress watchdog finds on one spot (stall_time / 3 within
+  /// stall_distance) drives 1-4 m to the most open known-free place it can reach around the other
+  /// robots; boxed in by robots, those touching it move away instead (`unsticks` in the result).
+  /// Willow, 16 robots, 900 s: tree stalled 1 and 1 robots (seeds 1, 2) without, 0 and 0 with.
+  bool unstick = true;
+  /// The same for the frontier methods; off by default: on willow (16 robots) it stalled more
+  /// robots (frontier 3 and 7 against 0 and 0; an unstick route stopped by the front guard keeps
+  /// the robot out of the allocation until the watchdog fires again).
+  bool frontier_unstick = false;
   double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
   double goal_tolerance = 0.3;  ///< [m] a waypoint or goal counts as reached
   double clearance = 0.1;       ///< [m] added to the body radius when planning paths
@@ -190,6 +199,7 @@ struct ExplorationResult {
   int watchdog_events = 0;
   int leg_replans = 0;  ///< tree legs re-planned around robots (TreeLegReplan::kAroundRobots)
   int escapes = 0;      ///< corridor escapes of the reactive controllers (AvoidEscape::kCorridor)
+  int unsticks = 0;     ///< unstick routes started (ExplorationOptions::unstick)
   std::size_t reachable_free_cells = 0;
   ExplorationRecording recording;
 };

@@ -141,7 +141,7 @@ TEST(Explorer, JsonHasTheDocumentedFields) {
   for (const char* key : {"\"coverage\":0.5", "\"t90_s\":12.5", "\"t99_s\":null", "\"distance_m\":",
                           "\"collisions\":", "\"feature_points\":", "\"leaves\":"})
     EXPECT_NE(j.find(key), std::string::npos) << key << " in " << j;
-  for (const char* key : {"\"leg_replans\":0", "\"escapes\":0"})
+  for (const char* key : {"\"leg_replans\":0", "\"escapes\":0", "\"unsticks\":0"})
     EXPECT_NE(j.find(key), std::string::npos) << key << " in " << j;
 }
 

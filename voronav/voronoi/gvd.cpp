@@ -13,8 +13,10 @@
 namespace voronav::voronoi {
 namespace {
 
-constexpr std::uint8_t kFreeCell = 0;
-constexpr std::uint8_t kBlockedCell = 1;
+// Blocked is 0: the state array starts zeroed (CellVector), all blocked, and only the box of the
+// non-blocked cells is written.
+constexpr std::uint8_t kBlockedCell = 0;
+constexpr std::uint8_t kFreeCell = 1;
 constexpr std::uint8_t kOutside = 2;
 constexpr std::int64_t kNone = -1;
 
@@ -38,15 +40,23 @@ void check_options(const GvdOptions& o) {
 
 // Lower envelope of parabolas (Felzenszwalb & Huttenlocher 2012, Algorithm 1) over integer
 // inputs; f[q] < 0 means "no site in this column". Writes the squared distance (or kNone) and
-// the argmin column.
+// the argmin column for the outputs [lo, hi] (default all n). Columns whose value at the nearest
+// output, f[q] + dist(q, [lo, hi])^2, exceeds `limit` are left out: the caller knows that every
+// output's minimum is at most `limit`, so they are never the argmin (not even in a tie).
 class Envelope {
  public:
   void run(const std::int64_t* f, int n, std::int64_t* d, std::int32_t* arg) {
+    run(f, n, d, arg, 0, n - 1, std::numeric_limits<std::int64_t>::max());
+  }
+  void run(const std::int64_t* f, int n, std::int64_t* d, std::int32_t* arg, int lo, int hi,
+           std::int64_t limit) {
     v_.resize(static_cast<std::size_t>(n));
     z_.resize(static_cast<std::size_t>(n) + 1);
     int k = -1;
     for (int q = 0; q < n; ++q) {
       if (f[q] < 0) continue;
+      const std::int64_t dq = q < lo ? lo - q : (q > hi ? q - hi : 0);
+      if (f[q] > limit - dq * dq) continue;
       if (k < 0) {
         k = 0;
         v_[0] = q;
@@ -78,12 +88,12 @@ class Envelope {
       z_[static_cast<std::size_t>(k) + 1] = HUGE_VAL;
     }
     if (k < 0) {
-      std::fill(d, d + n, kNone);
-      std::fill(arg, arg + n, -1);
+      std::fill(d + lo, d + hi + 1, kNone);
+      std::fill(arg + lo, arg + hi + 1, -1);
       return;
     }
     int j = 0;
-    for (int q = 0; q < n; ++q) {
+    for (int q = lo; q <= hi; ++q) {
       while (z_[static_cast<std::size_t>(j) + 1] < q)
         ++j;
       const int p = v_[static_cast<std::size_t>(j)];
@@ -113,44 +123,57 @@ DynamicGvd::DynamicGvd(const BinaryGrid& blocked, const GvdOptions& options)
   ph_ = geometry_.height + 2;
   inv_pw_ = 1.0 / static_cast<double>(pw_);
   const std::size_t n = static_cast<std::size_t>(pw_) * static_cast<std::size_t>(ph_);
-  state_.assign(n, options.border_is_blocked ? kBlockedCell : kOutside);
-  const auto src = blocked.data();
-  for (int y = 0; y < geometry_.height; ++y) {
-    const std::uint8_t* in =
-        &src[static_cast<std::size_t>(y) * static_cast<std::size_t>(geometry_.width)];
-    std::uint8_t* out = &state_[pidx(1, y + 1)];
-    for (int x = 0; x < geometry_.width; ++x)
-      out[x] = in[x] ? kBlockedCell : kFreeCell;
-  }
+  // Every per-cell array starts zeroed without a write (CellVector): 0 is a blocked cell that is
+  // its own site at distance 0 (col_arg_ and site_ are stored relative to the cell), not in the
+  // raw diagram, of obstacle label 0 (the obstacles around the box, see full_labels). So the
+  // build writes, and the system maps, only the pages of the box below.
+  state_ = internal::CellVector<std::uint8_t>(n);
+  col_d_ = internal::CellVector<std::int64_t>(n);
+  col_arg_ = internal::CellVector<std::int32_t>(n);
+  d2_ = internal::CellVector<std::int64_t>(n);
+  site_ = internal::CellVector<std::int32_t>(n);
+  label_ = internal::CellVector<std::int32_t>(n);
+  raw_ = internal::CellVector<std::uint8_t>(n);
   // Sparse build: every cell outside the bounding box of the non-blocked cells is an obstacle
   // whose own distance is 0, and the obstacles just outside the box shield it from the rest, so
   // the EDT, the labels and the raw diagram are computed inside the box (plus its one-cell frame)
   // only; on a map that is mostly unknown (= blocked) the cost follows the known free area.
+  // (The box never touches the padding ring when the border is blocked; otherwise the ring is
+  // outside-not-obstacle and the box is the whole raster.)
   int bx0 = pw_, by0 = ph_, bx1 = -1, by1 = -1;
-  for (int y = 0; y < ph_; ++y) {
-    const std::uint8_t* row = &state_[pidx(0, y)];
-    int first = -1, lastx = -1;
+  const auto src = blocked.data();
+  if (!options.border_is_blocked) {
+    bx0 = 0, by0 = 0, bx1 = pw_ - 1, by1 = ph_ - 1;
     for (int x = 0; x < pw_; ++x)
-      if (row[x] != kBlockedCell) {
-        if (first < 0) first = x;
-        lastx = x;
-      }
-    if (first < 0) continue;
-    bx0 = std::min(bx0, first), bx1 = std::max(bx1, lastx);
-    by0 = std::min(by0, y), by1 = y;
+      state_[pidx(x, 0)] = kOutside, state_[pidx(x, ph_ - 1)] = kOutside;
+    for (int y = 0; y < ph_; ++y)
+      state_[pidx(0, y)] = kOutside, state_[pidx(pw_ - 1, y)] = kOutside;
+  } else {
+    for (int y = 0; y < geometry_.height; ++y) {
+      const std::uint8_t* in =
+          &src[static_cast<std::size_t>(y) * static_cast<std::size_t>(geometry_.width)];
+      int first = -1, lastx = -1;
+      for (int x = 0; x < geometry_.width; ++x)
+        if (!in[x]) {
+          if (first < 0) first = x;
+          lastx = x;
+        }
+      if (first < 0) continue;
+      bx0 = std::min(bx0, first + 1), bx1 = std::max(bx1, lastx + 1);
+      by0 = std::min(by0, y + 1), by1 = y + 1;
+    }
   }
-  // Outside the box: blocked, its own site. (The box never touches the padding ring when the
-  // border is blocked; otherwise it is the whole raster.)
-  col_d_.assign(n, 0);
-  col_arg_.resize(n);
-  d2_.assign(n, 0);
-  site_.resize(n);
-  for (int y = 0; y < ph_; ++y)
-    std::fill_n(&col_arg_[pidx(0, y)], pw_, y);
-  for (std::size_t i = 0; i < n; ++i)
-    site_[i] = static_cast<std::int32_t>(i);
-  label_.assign(n, -1);
-  raw_.assign(n, 0);
+  if (bx1 >= 0) {
+    const int x0 = std::max(bx0, 1), x1 = std::min(bx1, pw_ - 2);
+    for (int y = std::max(by0, 1); y <= std::min(by1, ph_ - 2); ++y) {
+      const std::uint8_t* in =
+          &src[static_cast<std::size_t>(y - 1) * static_cast<std::size_t>(geometry_.width) +
+               static_cast<std::size_t>(x0 - 1)];
+      std::uint8_t* out = &state_[pidx(x0, y)];
+      for (int x = 0; x <= x1 - x0; ++x)
+        out[x] = in[x] ? kBlockedCell : kFreeCell;
+    }
+  }
   max_d2_ = 0;
   if (bx1 >= 0) {
     for (int x = bx0; x <= bx1; ++x)
@@ -168,7 +191,9 @@ DynamicGvd::DynamicGvd(const BinaryGrid& blocked, const GvdOptions& options)
         const std::size_t i = pidx(x, y);
         raw_[i] = raw_mark(i) ? 1 : 0;
       }
-  build_skeleton();
+  // The raw diagram lies in the box: the skeleton builds scan only its index range.
+  build_skeleton(bx1 >= 0 ? std::pair{pidx(bx0, by0), pidx(bx1, by1) + 1}
+                          : std::pair<std::size_t, std::size_t>{0, 0});
 }
 
 void DynamicGvd::grow_span(std::unordered_map<int, std::pair<int, int>>& spans,
@@ -216,15 +241,16 @@ void DynamicGvd::column_pass(int x, std::vector<ChangedRow>* changed_rows,
       best = above;
     const std::int64_t d = best < 0 ? kNone : std::int64_t{y - best} * (y - best);
     const std::size_t i = pidx(x, y);
-    if (changed_rows && (col_d_[i] != d || col_arg_[i] != best)) {
+    const std::int32_t old_arg = col_arg_of(i, y);
+    if (changed_rows && (col_d_[i] != d || old_arg != best)) {
       // Lowered: the new (distance, row) is lexicographically smaller and exists.
       const bool lowered =
-          d >= 0 && (col_d_[i] < 0 || d < col_d_[i] || (d == col_d_[i] && best < col_arg_[i]));
+          d >= 0 && (col_d_[i] < 0 || d < col_d_[i] || (d == col_d_[i] && best < old_arg));
       changed_rows->push_back(
-          {y, !lowered, col_arg_[i] < 0 ? -1 : static_cast<std::int32_t>(pidx(x, col_arg_[i]))});
+          {y, !lowered, old_arg < 0 ? -1 : static_cast<std::int32_t>(pidx(x, old_arg))});
     }
     col_d_[i] = d;
-    col_arg_[i] = best;
+    set_col_arg(i, y, best);
   }
 }
 
@@ -243,7 +269,7 @@ void DynamicGvd::row_pass(int y, int x0, int x1) {
     const auto k = static_cast<std::size_t>(x - x0);
     const std::int32_t ax = arg[k] < 0 ? -1 : arg[k] + x0;
     d2_[i] = d[k];
-    site_[i] = ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_[pidx(ax, y)]));
+    set_site(i, ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_of(pidx(ax, y), y))));
   }
 }
 
@@ -258,29 +284,36 @@ void DynamicGvd::row_segment(int y, int xa, int xb, std::vector<std::size_t>* ch
     const std::int64_t v = d2_[pidx(u, y)];
     return v < 0 ? HUGE_VAL : std::sqrt(static_cast<double>(v));
   };
+  // D(x) <= min(a + (x - xa + 1), b + (xb + 1 - x)) =: B(x) for the cells x of the segment, so
+  // the nearest column of x lies in [x - B(x), x + B(x)] and no minimum exceeds max B^2.
   const double a = dist(xa - 1), b = dist(xb + 1);
-  const double span = static_cast<double>(xb - xa + 2);
+  const double len = static_cast<double>(xb - xa);
   int c0 = 0, c1 = pw_ - 1;
+  std::int64_t limit = std::numeric_limits<std::int64_t>::max();
   if (a < HUGE_VAL || b < HUGE_VAL) {
-    const double m = a < HUGE_VAL && b < HUGE_VAL ? 0.5 * (a + b + span) : std::min(a, b) + span;
-    const int w = static_cast<int>(std::ceil(m)) + 1;
-    c0 = std::max(0, xa - w);
-    c1 = std::min(pw_ - 1, xb + w);
+    const double reach_l = std::min(a + 1.0, b + len + 1.0);
+    const double reach_r = std::min(b + 1.0, a + len + 1.0);
+    double bmax = std::min(a, b) + len + 1.0;
+    if (a < HUGE_VAL && b < HUGE_VAL) bmax = std::min(bmax, 0.5 * (a + b + len + 2.0));
+    c0 = std::max(0, xa - static_cast<int>(std::ceil(reach_l)) - 1);
+    c1 = std::min(pw_ - 1, xb + static_cast<int>(std::ceil(reach_r)) + 1);
+    limit = static_cast<std::int64_t>(std::ceil((bmax + 0.01) * (bmax + 0.01)));
   }
   const int n = c1 - c0 + 1;
   d.resize(static_cast<std::size_t>(n));
   arg.resize(static_cast<std::size_t>(n));
-  env.run(&col_d_[pidx(c0, y)], n, d.data(), arg.data());
+  env.run(&col_d_[pidx(c0, y)], n, d.data(), arg.data(), xa - c0, xb - c0, limit);
   for (int x = xa; x <= xb; ++x) {
     const std::size_t i = pidx(x, y);
     const auto k = static_cast<std::size_t>(x - c0);
     const std::int32_t ax = arg[k] < 0 ? -1 : arg[k] + c0;
-    const std::int32_t s = ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_[pidx(ax, y)]));
-    if (d2_[i] == d[k] && site_[i] == s) continue;
+    const std::int32_t s =
+        ax < 0 ? -1 : static_cast<std::int32_t>(pidx(ax, col_arg_of(pidx(ax, y), y)));
+    if (d2_[i] == d[k] && site_of(i) == s) continue;
     changed->push_back(i);
     if (d2_[i] != d[k]) d2_changed_[i] = 1, old_d2_[i] = d2_[i];
     d2_[i] = d[k];
-    site_[i] = s;
+    set_site(i, s);
   }
 }
 
@@ -293,12 +326,14 @@ void DynamicGvd::row_lower(int y, int xa, int xb, const std::vector<int>& cols,
   for (const int xc : cols) {
     const std::size_t ci = pidx(xc, y);
     if (col_d_[ci] < 0) continue;
-    cs.push_back({col_d_[ci], xc, col_arg_[ci], static_cast<std::int32_t>(pidx(xc, col_arg_[ci]))});
+    const std::int32_t sy = col_arg_of(ci, y);
+    cs.push_back({col_d_[ci], xc, sy, static_cast<std::int32_t>(pidx(xc, sy))});
   }
   for (int x = xa; x <= xb; ++x) {
     const std::size_t i = pidx(x, y);
     std::int64_t bd = d2_[i];
-    std::int32_t bs = site_[i];
+    const std::int32_t old_site = site_of(i);
+    std::int32_t bs = old_site;
     for (const LowerCol& c : cs) {
       const std::int64_t dd = std::int64_t{x - c.x} * (x - c.x) + c.d;
       bool better = bd < 0 || dd < bd;
@@ -308,11 +343,73 @@ void DynamicGvd::row_lower(int y, int xa, int xb, const std::vector<int>& cols,
       }
       if (better) bd = dd, bs = c.s;
     }
-    if (bd == d2_[i] && bs == site_[i]) continue;
+    if (bd == d2_[i] && bs == old_site) continue;
     changed->push_back(i);
     if (bd != d2_[i]) d2_changed_[i] = 1, old_d2_[i] = d2_[i];
     d2_[i] = bd;
-    site_[i] = bs;
+    set_site(i, bs);
+  }
+}
+
+void DynamicGvd::lowered_ranges(int y, int c0, int c1,
+                                std::vector<std::pair<int, int>>* ranges) const {
+  // Cell x of row y can change only when the new site s = (c, sy) of a run column c beats its
+  // old distance: f_c(x) = |p_x - s|^2 - d^2(x) <= 0. With t the old site of x (|p_x - t|^2 =
+  // d^2(x)), g(x') = |p_x' - s|^2 - |p_x' - t|^2 is linear along the row, g(x) = f_c(x), slope
+  // 2 (t_x - c); and d^2(x') <= |p_x' - t|^2 (t was an obstacle), so f_c(x') >= g(x'). Where
+  // f_c(x) > 0 the cells up to where g reaches 0 are skipped (all of them when g grows away
+  // from the run), and where x cannot see c (|x - c|^2 > d^2(x)) no cell beyond can (the
+  // distance is 1-Lipschitz). The cells kept are appended as ranges.
+  std::pair<int, std::int64_t> sites[kMaxHalfPlaneRun];  // (column, squared height of its site)
+  int ns = 0;
+  for (int c = c0; c <= c1; ++c) {
+    const std::size_t ci = pidx(c, y);
+    if (col_d_[ci] >= 0) sites[ns++] = {c, col_d_[ci]};
+  }
+  const std::int64_t* drow = &d2_[pidx(0, y)];
+  const std::size_t row0 = pidx(0, y);
+  constexpr int kAll = std::numeric_limits<int>::max();
+  // Cells from x on (dir = +1 right, -1 left) that no run column can change: 0 when x may
+  // change, kAll when no cell from x on can.
+  auto safe = [&](int x, int dir) {
+    const std::int64_t v = drow[x];
+    if (v < 0) return 0;
+    const int tx = xy(static_cast<std::size_t>(site_of(row0 + static_cast<std::size_t>(x)))).first;
+    int skip = kAll;
+    for (int k = 0; k < ns; ++k) {
+      const auto [c, h2] = sites[k];
+      const std::int64_t dx2 = std::int64_t{x - c} * (x - c);
+      if (dx2 > v) continue;  // x cannot see c, nor can the cells beyond
+      const std::int64_t f = dx2 + h2 - v;
+      if (f <= 0) return 0;
+      const std::int64_t rate = 2 * std::int64_t{dir > 0 ? c - tx : tx - c};  // fall of g per cell
+      if (rate <= 0) continue;
+      skip = static_cast<int>(std::min<std::int64_t>(skip, (f + rate - 1) / rate));
+    }
+    return skip;
+  };
+  for (int dir = -1; dir <= 1; dir += 2) {
+    const int from = dir > 0 ? c1 : c0;
+    int a = from, b = from;  // the piece being grown (from the run's end outwards)
+    if (dir > 0) a = c0;
+    int x = from + dir;
+    while (x >= 0 && x < pw_) {
+      const std::int64_t v = drow[x];
+      if (v >= 0 && std::int64_t{x - from} * (x - from) > v) break;
+      const int k = safe(x, dir);
+      if (k == kAll) break;
+      if (k > 0) {
+        x += dir * k;
+        continue;
+      }
+      if (x != b + dir) {
+        ranges->emplace_back(std::min(a, b), std::max(a, b));
+        a = x;
+      }
+      b = x;
+      x += dir;
+    }
+    ranges->emplace_back(std::min(a, b), std::max(a, b));
   }
 }
 
@@ -352,22 +449,19 @@ void DynamicGvd::full_labels(int bx0, int by0, int bx1, int by1) {
   next_label_ = 0;
   std::vector<std::size_t> cells;
   // Sparse: the obstacle cells outside the box grown by one form one component (the padding
-  // ring is blocked around the box); it is labelled without a flood, then flooded from its
-  // inner frame into the box.
+  // ring is blocked around the box): label 0, which every cell has from the start (label_ is
+  // zeroed); the box and its frame are cleared, then flooded from the frame into the box.
   const int fx0 = bx0 - 1, fy0 = by0 - 1, fx1 = bx1 + 1, fy1 = by1 + 1;
   if (bx1 >= 0 && fx0 >= 0 && fy0 >= 0 && fx1 < pw_ && fy1 < ph_) {
-    const std::int32_t id = next_label_++;
-    std::int64_t count = 0;
-    for (int y = 0; y < ph_; ++y)
-      for (int x = 0; x < pw_; ++x)
-        if (x < fx0 || x > fx1 || y < fy0 || y > fy1) {
-          label_[pidx(x, y)] = id;
-          ++count;
-        }
+    const std::int32_t id = next_label_++;  // 0
+    for (int y = fy0; y <= fy1; ++y)
+      std::fill_n(&label_[pidx(fx0, y)], fx1 - fx0 + 1, -1);
     relabel_from(pidx(fx0, fy0), id, &cells);
-    count += static_cast<std::int64_t>(cells.size());
-    label_size_.push_back(count);
+    const std::int64_t frame = std::int64_t{fx1 - fx0 + 1} * (fy1 - fy0 + 1);
+    label_size_.push_back(std::int64_t{pw_} * ph_ - frame +
+                          static_cast<std::int64_t>(cells.size()));
   } else {
+    std::fill(label_.begin(), label_.end(), -1);
     bx0 = 0, by0 = 0, bx1 = pw_ - 1, by1 = ph_ - 1;
   }
   for (int y = std::max(0, by0 - 1); y <= std::min(ph_ - 1, by1 + 1); ++y)
@@ -581,8 +675,9 @@ bool DynamicGvd::update_labels(const std::vector<std::size_t>& added,
 }
 
 bool DynamicGvd::raw_mark(std::size_t i) const {
-  if (state_[i] != kFreeCell || site_[i] < 0) return false;
-  const auto s = static_cast<std::size_t>(site_[i]);
+  const std::int32_t si = site_of(i);
+  if (state_[i] != kFreeCell || si < 0) return false;
+  const auto s = static_cast<std::size_t>(si);
   double sep2 = -1.0;  // computed when first needed
   const std::ptrdiff_t offs[4] = {1, -1, pw_, -pw_};
   for (const std::ptrdiff_t off : offs) {
@@ -593,9 +688,11 @@ bool DynamicGvd::raw_mark(std::size_t i) const {
       if (label_[s] != label_[j]) return true;  // d_i = 1 = distance to j: exactly equidistant
       continue;
     }
-    if (state_[j] != kFreeCell || site_[j] < 0 || site_[j] == site_[i]) continue;
+    if (state_[j] != kFreeCell) continue;
+    const std::int32_t sj = site_of(j);
+    if (sj < 0 || sj == si) continue;
     if (!(d2_[i] > d2_[j] || (d2_[i] == d2_[j] && i < j))) continue;  // the other one is marked
-    const auto t = static_cast<std::size_t>(site_[j]);
+    const auto t = static_cast<std::size_t>(sj);
     if (label_[s] != label_[t]) return true;
     if (sep2 < 0.0) {
       const double sep =
@@ -618,24 +715,24 @@ double DynamicGvd::max_spur() const {
          1.0;
 }
 
-const std::vector<std::uint8_t>& DynamicGvd::skel() const {
+const internal::CellVector<std::uint8_t>& DynamicGvd::skel() const {
   return thins_.empty() ? raw_ : thins_.back().out();
 }
 
-void DynamicGvd::build_skeleton() {
+void DynamicGvd::build_skeleton(std::pair<std::size_t, std::size_t> span) {
   thins_.clear();
   prunes_.clear();
   if (!options_.thin) return;
   const internal::PaddedRaster r{pw_, ph_};
   thins_.emplace_back(r);
-  thins_.back().build(raw_, d2_);
+  thins_.back().build(raw_, d2_, span);
   if (options_.spur_min_length <= 0.0 && options_.spur_clearance_ratio <= 0.0) return;
   const double min_cells = options_.spur_min_length / geometry_.resolution;
   for (int round = 0; round < options_.prune_rounds; ++round) {
     prunes_.emplace_back(r, min_cells, options_.spur_clearance_ratio);
-    prunes_.back().build(thins_.back().out(), d2_, max_spur());
+    prunes_.back().build(thins_.back().out(), d2_, max_spur(), span);
     thins_.emplace_back(r);
-    thins_.back().build(prunes_.back().out(), d2_);
+    thins_.back().build(prunes_.back().out(), d2_, span);
   }
 }
 
@@ -671,9 +768,9 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
   if (stats.changed_cells == 0) return stats;
   if (mark_.empty()) {  // scratch of the updates, allocated on the first one
     visit_.assign(state_.size(), -1);
-    mark_.assign(state_.size(), 0);
-    d2_changed_.assign(state_.size(), 0);
-    old_d2_.assign(state_.size(), 0);
+    mark_ = internal::CellVector<std::uint8_t>(state_.size());
+    d2_changed_ = internal::CellVector<std::uint8_t>(state_.size());
+    old_d2_ = internal::CellVector<std::int64_t>(state_.size());
   }
 
   // Distance field: recompute the touched columns between the nearest obstacles above and below
@@ -737,6 +834,11 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
         const std::int64_t v = drow[x];
         return v < 0 || std::int64_t{x - xc} * (x - xc) <= v;
       };
+      if (!raised && c1 - c0 < kMaxHalfPlaneRun) {
+        lowered_ranges(y, c0, c1, &ranges);
+        k = e + 1;
+        continue;
+      }
       int l = c0, r = c1;
       while (l > 0 && sees(l - 1, c0))
         --l;
@@ -754,6 +856,10 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
         ranges[++m] = ranges[k];
     }
     ranges.resize(m + 1);
+    constexpr std::uint8_t kOldSiteBit = 4;  // marks old_sites in mark_ during the row
+    if (raised && !lowered)
+      for (const std::int32_t st : old_sites)
+        mark_[static_cast<std::size_t>(st)] |= kOldSiteBit;
     for (const auto& [l, r] : ranges) {
       if (raised && !lowered) {
         // Only raised columns: every other column's candidate is unchanged or worse, so a cell
@@ -761,8 +867,8 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
         // site of a cell is the site of its column in its row). Those runs are recomputed,
         // bounded by the unchanged cells around them.
         auto hit = [&](int x) {
-          const std::int32_t st = site_[pidx(x, y)];
-          return st >= 0 && std::find(old_sites.begin(), old_sites.end(), st) != old_sites.end();
+          const std::int32_t st = site_of(pidx(x, y));
+          return st >= 0 && (mark_[static_cast<std::size_t>(st)] & kOldSiteBit) != 0;
         };
         for (int x = l; x <= r;) {
           if (!hit(x)) {
@@ -784,6 +890,9 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
         stats.row_cells += static_cast<std::size_t>(r - l + 1);
       }
     }
+    if (raised && !lowered)
+      for (const std::int32_t st : old_sites)
+        mark_[static_cast<std::size_t>(st)] &= static_cast<std::uint8_t>(~kOldSiteBit);
     ++stats.recomputed_rows;
   }
   stats.changed_distances = changed.size();
@@ -823,7 +932,8 @@ GvdUpdateStats DynamicGvd::update(std::span<const CellChange> changes) {
     for (int y = std::max(0, y0 - m); y <= std::min(ph_ - 1, y1 + m); ++y)
       for (int x = std::max(0, x0 - m); x <= std::min(pw_ - 1, x1 + m); ++x) {
         const std::size_t i = pidx(x, y);
-        if (site_[i] >= 0 && (mark_[static_cast<std::size_t>(site_[i])] & 1U)) redo_around(i);
+        const std::int32_t si = site_of(i);
+        if (si >= 0 && (mark_[static_cast<std::size_t>(si)] & 1U)) redo_around(i);
       }
     for (const std::size_t c : relabeled)
       mark_[c] &= static_cast<std::uint8_t>(~1U);
@@ -917,8 +1027,8 @@ GeneralizedVoronoi DynamicGvd::snapshot() const {
       const std::size_t i = pidx(x + 1, y + 1);
       g.blocked[c] = state_[i] == kBlockedCell ? 1 : 0;
       if (d2_[i] >= 0) g.clearance[c] = static_cast<float>(std::sqrt(static_cast<double>(d2_[i])));
-      if (site_[i] >= 0) {
-        const auto s = static_cast<std::size_t>(site_[i]);
+      if (site_of(i) >= 0) {
+        const auto s = static_cast<std::size_t>(site_of(i));
         g.nearest_site[c] = Cell{static_cast<int>(s % static_cast<std::size_t>(pw_)) - 1,
                                  static_cast<int>(s / static_cast<std::size_t>(pw_)) - 1};
       }

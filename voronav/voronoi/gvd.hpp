@@ -20,7 +20,10 @@
 //
 // The full build works inside the bounding box of the non-blocked cells only (the cells outside
 // are obstacles at distance 0 shielded by the box's frame; their labels are one component), so on
-// a mostly unknown map its cost follows the known free area, not the grid.
+// a mostly unknown map its cost follows the known free area, not the grid: the per-cell arrays
+// start zeroed without a write (zero encodes "blocked, its own site at distance 0"), so only the
+// pages of the box's rows are written, and freed arrays are kept for the next build
+// (internal::zeroed_alloc).
 //
 // DynamicGvd keeps the state so that changed cells (a door closes, an obstacle moves) update
 // everything locally, in the spirit of the dynamic brushfire of Lau, Sprunk and Burgard (2013):
@@ -28,10 +31,14 @@
 //    data changed only the segment that can see a changed column (|x - x'|^2 <= old d^2, found by
 //    scanning out from the changed columns; the distance is 1-Lipschitz so the scan stops at the
 //    first cell that fails) is recomputed, by the parabola envelope over the columns within the
-//    largest possible new distance (bounded by the unchanged cells just outside the segment); in a
-//    row where every changed column was raised (obstacles removed) only the runs of cells whose
-//    site was in a changed column are recomputed (every other candidate got no better). The
-//    nearest site is the lexicographic minimum of (squared distance, column, row) in both builds;
+//    largest possible new distance (bounded by the unchanged cells just outside the segment, which
+//    also bounds the columns worth entering the envelope); in a row where every changed column
+//    was raised (obstacles removed) only the runs of cells whose site was in a changed column are
+//    recomputed (every other candidate got no better); in a row where every changed column was
+//    lowered (obstacles added) only the cells a new site can beat are: where it does not beat a
+//    cell, |p - s|^2 - |p - t|^2 (t the cell's old site) is linear along the row, so the scan
+//    skips ahead to where it could reach 0 and stops where it only grows. The nearest site is the
+//    lexicographic minimum of (squared distance, column, row) in both builds;
 //  - obstacle labels: added cells take the label they touch; a merge relabels the smaller
 //    components, a split is found by flooding from the remaining neighbours of the removed cells
 //    in turn until at most one flood is unfinished (only the pieces that split off are relabeled);
@@ -49,6 +56,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <unordered_map>
 #include <utility>
@@ -184,6 +192,10 @@ class DynamicGvd {
   // the changed columns' sites for the cells [xa, xb].
   void row_lower(int y, int xa, int xb, const std::vector<int>& cols,
                  std::vector<std::size_t>* changed);
+  // Row y where the run of columns [c0, c1] was lowered (obstacles added, nothing raised in
+  // the row): appends the ranges of cells that a new site of the run can change.
+  static constexpr int kMaxHalfPlaneRun = 8;
+  void lowered_ranges(int y, int c0, int c1, std::vector<std::pair<int, int>>* ranges) const;
   void grow_span(std::unordered_map<int, std::pair<int, int>>& spans, std::size_t i) const;
   void row_pass(int y, int x0, int x1);
   // Recomputes the cells [xa, xb] of row y exactly from the column data (window of columns
@@ -202,36 +214,54 @@ class DynamicGvd {
   // During update(): whether the key (d2, index) order of raw cell c and one of its raw
   // 8-neighbours differs from before the update.
   [[nodiscard]] bool key_order_flipped(std::size_t c) const;
-  void build_skeleton();
+  // span: an index range holding every raw cell.
+  void build_skeleton(std::pair<std::size_t, std::size_t> span);
   [[nodiscard]] double max_spur() const;
-  [[nodiscard]] const std::vector<std::uint8_t>& skel() const;
+  [[nodiscard]] const internal::CellVector<std::uint8_t>& skel() const;
+  // site_ and col_arg_ hold the site (padded index) and the column's site row relative to the
+  // cell (0: the cell itself, the value of a zeroed array) or kNoRel (none).
+  static constexpr std::int32_t kNoRel = std::numeric_limits<std::int32_t>::min();
+  [[nodiscard]] std::int32_t site_of(std::size_t i) const {
+    const std::int32_t s = site_[i];
+    return s == kNoRel ? -1 : static_cast<std::int32_t>(i) + s;
+  }
+  void set_site(std::size_t i, std::int32_t s) {
+    site_[i] = s < 0 ? kNoRel : s - static_cast<std::int32_t>(i);
+  }
+  [[nodiscard]] std::int32_t col_arg_of(std::size_t i, int y) const {
+    const std::int32_t a = col_arg_[i];
+    return a == kNoRel ? -1 : y + a;
+  }
+  void set_col_arg(std::size_t i, int y, std::int32_t a) { col_arg_[i] = a < 0 ? kNoRel : a - y; }
 
   GvdOptions options_;
   GridGeometry geometry_;
   int pw_ = 0, ph_ = 0;  // padded size (one cell on each side)
   double inv_pw_ = 0.0;  // 1 / pw_
-  // Per padded cell: 0 free, 1 blocked, 2 outside and not an obstacle (border not blocked).
-  std::vector<std::uint8_t> state_;
-  std::vector<std::int64_t> col_d_;  // squared vertical distance to the nearest site in the column
-  std::vector<std::int32_t> col_arg_;  // row of that site (-1 none)
-  std::vector<std::int64_t> d2_;       // squared distance (-1 none)
-  std::vector<std::int32_t> site_;     // padded index of the nearest site (-1 none)
-  std::vector<std::int32_t> label_;    // obstacle component id (-1 free)
+  // Per padded cell, all zeroed at the start (CellVector, see the constructor): blocked, free,
+  // or outside and not an obstacle (border not blocked).
+  internal::CellVector<std::uint8_t> state_;
+  internal::CellVector<std::int64_t>
+      col_d_;  // squared vertical distance to the nearest site in the column
+  internal::CellVector<std::int32_t> col_arg_;  // row of that site (relative, col_arg_of)
+  internal::CellVector<std::int64_t> d2_;       // squared distance (-1 none)
+  internal::CellVector<std::int32_t> site_;  // padded index of the nearest site (relative, site_of)
+  internal::CellVector<std::int32_t> label_;  // obstacle component id (-1 free)
   std::int32_t next_label_ = 0;
-  std::vector<std::int64_t> label_size_;  // cells per label id
-  std::int64_t max_d2_ = 0;               // >= every finite squared distance
-  std::vector<std::int32_t> visit_;       // scratch of the split search (-1)
-  std::vector<std::uint8_t> mark_;        // scratch marks (0)
-  std::vector<std::uint8_t> d2_changed_;  // scratch of update(): the distance changed (0)
-  std::vector<std::int64_t> old_d2_;      // scratch of update(): d2 before it changed
-  struct LowerCol {                       // scratch of row_lower(): a changed column's site
-    std::int64_t d;                       // squared vertical distance of the site
-    int x;                                // column
-    std::int32_t sy;                      // row of the site
-    std::int32_t s;                       // padded index of the site
+  std::vector<std::int64_t> label_size_;           // cells per label id
+  std::int64_t max_d2_ = 0;                        // >= every finite squared distance
+  std::vector<std::int32_t> visit_;                // scratch of the split search (-1)
+  internal::CellVector<std::uint8_t> mark_;        // scratch marks (0)
+  internal::CellVector<std::uint8_t> d2_changed_;  // scratch of update(): the distance changed (0)
+  internal::CellVector<std::int64_t> old_d2_;      // scratch of update(): d2 before it changed
+  struct LowerCol {   // scratch of row_lower(): a changed column's site
+    std::int64_t d;   // squared vertical distance of the site
+    int x;            // column
+    std::int32_t sy;  // row of the site
+    std::int32_t s;   // padded index of the site
   };
   std::vector<LowerCol> lower_cols_;
-  std::vector<std::uint8_t> raw_;
+  internal::CellVector<std::uint8_t> raw_;
   std::vector<internal::ParallelThinning> thins_;  // thin, then (prune, thin) per round
   std::vector<internal::ParallelPruning> prunes_;
 };

@@ -3,20 +3,114 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <mutex>
+#include <new>
+#include <utility>
+#include <vector>
+
+#include <sys/mman.h>
 
 namespace voronav::voronoi::internal {
+
+namespace {
+
+// Under AddressSanitizer every block comes from calloc, which it checks (it does not watch
+// mapped memory).
+#if defined(__SANITIZE_ADDRESS__)
+#define VORONAV_ZEROED_CALLOC_ONLY 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define VORONAV_ZEROED_CALLOC_ONLY 1
+#endif
+#endif
+#ifdef VORONAV_ZEROED_CALLOC_ONLY
+constexpr bool kCallocOnly = true;
+#else
+constexpr bool kCallocOnly = false;
+#endif
+constexpr std::size_t kMapBytes = std::size_t{1} << 16;     // larger blocks are mapped
+constexpr std::size_t kKeepBytes = std::size_t{128} << 20;  // at most this much is kept
+
+// Freed mapped blocks kept for reuse, oldest first (a fresh mapping costs a page fault per page
+// touched, more than clearing a block that is already mapped): rebuilding a diagram of the same
+// size then needs no new pages. Shared by all threads; never destroyed (static destruction
+// order).
+struct BlockCache {
+  std::mutex mutex;
+  std::vector<std::pair<void*, std::size_t>> blocks;
+  std::size_t bytes = 0;
+};
+BlockCache& block_cache() {
+  static auto* cache = new BlockCache;
+  return *cache;
+}
+
+}  // namespace
+
+void* zeroed_alloc(std::size_t n) {
+  if (kCallocOnly || n < kMapBytes) {
+    void* p = std::calloc(n, 1);
+    if (!p) throw std::bad_alloc();
+    return p;
+  }
+  {
+    BlockCache& c = block_cache();
+    const std::lock_guard<std::mutex> lock(c.mutex);
+    for (auto it = c.blocks.begin(); it != c.blocks.end(); ++it)
+      if (it->second == n) {
+        void* p = it->first;
+        c.bytes -= n;
+        c.blocks.erase(it);
+        std::memset(p, 0, n);
+        return p;
+      }
+  }
+  void* p = mmap(nullptr, n, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (p == MAP_FAILED) throw std::bad_alloc();
+  return p;
+}
+
+void zeroed_free(void* p, std::size_t n) {
+  if (!p) return;
+  if (kCallocOnly || n < kMapBytes) {
+    std::free(p);
+    return;
+  }
+  if (n > kKeepBytes) {
+    munmap(p, n);
+    return;
+  }
+  // The oldest blocks make room (they are of a diagram that is gone).
+  std::vector<std::pair<void*, std::size_t>> evicted;
+  {
+    BlockCache& c = block_cache();
+    const std::lock_guard<std::mutex> lock(c.mutex);
+    std::size_t k = 0;
+    while (c.bytes + n > kKeepBytes) {
+      c.bytes -= c.blocks[k].second;
+      evicted.push_back(c.blocks[k++]);
+    }
+    c.blocks.erase(c.blocks.begin(), c.blocks.begin() + static_cast<std::ptrdiff_t>(k));
+    c.blocks.emplace_back(p, n);
+    c.bytes += n;
+  }
+  for (const auto& [q, m] : evicted)
+    munmap(q, m);
+}
+
 namespace {
 
 // [lo, hi): the index range holding every set cell of `in` (empty: lo == hi). Scans 8 bytes at
 // a time (the sets are sparse).
-std::pair<std::size_t, std::size_t> set_range(const std::vector<std::uint8_t>& in) {
-  const std::size_t n = in.size();
+std::pair<std::size_t, std::size_t> set_range(const CellVector<std::uint8_t>& in,
+                                              std::pair<std::size_t, std::size_t> span) {
+  const std::size_t n = std::min(in.size(), span.second);
   auto word = [&](std::size_t i) {
     std::uint64_t v = 0;
     std::memcpy(&v, in.data() + i, 8);
     return v;
   };
-  std::size_t lo = 0;
+  std::size_t lo = std::min(span.first, n);
   while (lo + 8 <= n && word(lo) == 0)
     lo += 8;
   while (lo < n && in[lo] == 0)
@@ -32,7 +126,7 @@ std::pair<std::size_t, std::size_t> set_range(const std::vector<std::uint8_t>& i
 
 }  // namespace
 
-bool ParallelThinning::removable(const std::vector<std::uint8_t>& in, std::size_t c, int t) const {
+bool ParallelThinning::removable(const CellVector<std::uint8_t>& in, std::size_t c, int t) const {
   int nb[8];
   int deg = 0;
   for (int k = 0; k < 8; ++k) {
@@ -64,13 +158,14 @@ bool ParallelThinning::removable(const std::vector<std::uint8_t>& in, std::size_
   return false;
 }
 
-void ParallelThinning::build(const std::vector<std::uint8_t>& in,
-                             const std::vector<std::int64_t>& key) {
+void ParallelThinning::build(const CellVector<std::uint8_t>& in,
+                             const CellVector<std::int64_t>& key,
+                             std::pair<std::size_t, std::size_t> span) {
   key_ = &key;
   const std::size_t n = in.size();
   cells_.reset(n);  // all kept, no record, not seen (zero pages: untouched cells cost nothing)
   epoch_ = 0;
-  const auto [lo, hi] = set_range(in);  // sparse maps: only the range of the set is scanned
+  const auto [lo, hi] = set_range(in, span);  // sparse maps: only the range of the set is scanned
   std::vector<std::size_t> lists[4];
   for (std::size_t c = lo; c < hi; ++c)
     if (in[c]) lists[subfield(c)].push_back(c);
@@ -92,17 +187,17 @@ void ParallelThinning::build(const std::vector<std::uint8_t>& in,
     }
   }
   steps_ = last + 1;
-  out_.assign(n, 0);
+  out_ = CellVector<std::uint8_t>(n);
   for (std::size_t c = lo; c < hi; ++c)
     out_[c] = in[c] && removed_at(c) == kNever ? 1 : 0;
 }
 
-std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
+std::vector<Delta> ParallelThinning::update(const CellVector<std::uint8_t>& in,
                                             const std::vector<Delta>& in_changes,
-                                            const std::vector<std::int64_t>& key,
+                                            const CellVector<std::int64_t>& key,
                                             const std::vector<std::size_t>& key_changes,
                                             std::size_t* work,
-                                            const std::vector<std::uint8_t>* fixed_point) {
+                                            const CellVector<std::uint8_t>* fixed_point) {
   key_ = &key;
   const auto w = static_cast<std::ptrdiff_t>(r_.width);
   const auto h = static_cast<std::ptrdiff_t>(r_.height);
@@ -187,7 +282,7 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
   std::vector<std::uint8_t>& relevant = relevant_;
   relevant.clear();
   if (fixed_point) {
-    const std::vector<std::uint8_t>& f = *fixed_point;
+    const CellVector<std::uint8_t>& f = *fixed_point;
     auto hot = [&](std::size_t c) {
       return around2(c, [&](std::size_t y) { return (f[y] && !in[y]) || cells_[y].removed != 0; });
     };
@@ -339,12 +434,12 @@ std::vector<Delta> ParallelThinning::update(const std::vector<std::uint8_t>& in,
   return out;
 }
 
-bool ParallelPruning::walk(const std::vector<std::uint8_t>& in, std::size_t e, double max_len,
+bool ParallelPruning::walk(const CellVector<std::uint8_t>& in, std::size_t e, double max_len,
                            std::vector<std::size_t>& path) const {
   path.assign(1, e);
   std::size_t prev = e, cur = e;
   double length = 0.0;
-  while (cur == e || skeleton_degree(in, r_, cur) < 3) {
+  while (cur == e || skeleton_degree(in.data(), r_, cur) < 3) {
     if (length >= max_len) return false;  // longer than any threshold: kept
     // Next cell: a neighbour not yet on the path, straight neighbours first.
     std::size_t next = cur;
@@ -372,29 +467,29 @@ bool ParallelPruning::walk(const std::vector<std::uint8_t>& in, std::size_t e, d
   return true;
 }
 
-void ParallelPruning::build(const std::vector<std::uint8_t>& in,
-                            const std::vector<std::int64_t>& d2, double max_len) {
+void ParallelPruning::build(const CellVector<std::uint8_t>& in, const CellVector<std::int64_t>& d2,
+                            double max_len, std::pair<std::size_t, std::size_t> span) {
   d2_ = &d2;
   const std::size_t n = in.size();
   slots_.reset(n);  // no owner, not seen
   epoch_ = 0;
   spurs_.clear();
   std::vector<std::size_t> path;
-  const auto [lo, hi] = set_range(in);
+  const auto [lo, hi] = set_range(in, span);
   for (std::size_t c = lo; c < hi; ++c) {
-    if (!in[c] || skeleton_degree(in, r_, c) != 1 || !walk(in, c, max_len, path)) continue;
+    if (!in[c] || skeleton_degree(in.data(), r_, c) != 1 || !walk(in, c, max_len, path)) continue;
     for (const std::size_t p : path)
       set_owner(p, c);
     spurs_.emplace(c, path);
   }
-  out_.assign(n, 0);
+  out_ = CellVector<std::uint8_t>(n);
   for (std::size_t c = lo; c < hi; ++c)
     out_[c] = in[c] && owner(c) < 0 ? 1 : 0;
 }
 
-std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
+std::vector<Delta> ParallelPruning::update(const CellVector<std::uint8_t>& in,
                                            const std::vector<Delta>& in_changes,
-                                           const std::vector<std::int64_t>& d2,
+                                           const CellVector<std::int64_t>& d2,
                                            const std::vector<std::size_t>& key_changes,
                                            double max_len, std::size_t* work) {
   d2_ = &d2;
@@ -403,7 +498,7 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   for (const Delta& d : in_changes)
     dirty.push_back(d.cell);
   for (const std::size_t k : key_changes)  // the clearance matters at junctions only
-    if (in[k] && skeleton_degree(in, r_, k) >= 3) dirty.push_back(k);
+    if (in[k] && skeleton_degree(in.data(), r_, k) >= 3) dirty.push_back(k);
   if (dirty.empty()) return {};
   const auto w = static_cast<std::ptrdiff_t>(r_.width);
   const auto h = static_cast<std::ptrdiff_t>(r_.height);
@@ -460,7 +555,7 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const auto [c, depth] = queue[q];
     if (work) ++*work;
-    const int deg = skeleton_degree(in, r_, c);
+    const int deg = skeleton_degree(in.data(), r_, c);
     if (deg == 1) candidates.push_back(c);
     if ((deg >= 3 && depth > 0) || depth >= max_depth) continue;
     for (int k = 0; k < 8; ++k) {
@@ -474,7 +569,7 @@ std::vector<Delta> ParallelPruning::update(const std::vector<std::uint8_t>& in,
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   std::vector<std::size_t>& path = path_;
   for (const std::size_t e : candidates) {
-    if (!in[e] || owner(e) >= 0 || skeleton_degree(in, r_, e) != 1) continue;
+    if (!in[e] || owner(e) >= 0 || skeleton_degree(in.data(), r_, e) != 1) continue;
     if (!walk(in, e, max_len, path)) continue;
     for (const std::size_t p : path) {
       set_owner(p, e);

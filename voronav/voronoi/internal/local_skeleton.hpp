@@ -39,9 +39,41 @@
 
 namespace voronav::voronoi::internal {
 
-/// A per-cell array of a trivial type, all bytes zero at the start. It is allocated with calloc,
-/// so a large array gets fresh zero pages from the system: the cells a run never touches cost
-/// no time (a std::vector would write every cell). Copies copy the contents.
+/// Zeroed memory of n bytes: a large block is mapped straight from the system (fresh zero pages,
+/// of which only those touched later cost a page fault); a small one comes from calloc. (calloc
+/// alone does not guarantee this: once the allocator has raised its mapping threshold after a
+/// free, a large block comes from the heap and is cleared page by page.)
+void* zeroed_alloc(std::size_t n);
+void zeroed_free(void* p, std::size_t n);
+
+/// An allocator of zeroed memory (zeroed_alloc) whose value-initialisation writes nothing: a
+/// CellVector<T> v(n) holds n zeros and touches none of its pages until they are written, so an
+/// array over the whole grid costs what its used part costs. Only for trivial types whose zero
+/// bytes are the value-initialised value, and only grown from empty (a vector that shrinks and
+/// grows again would keep the old values in the regrown part).
+template <class T>
+struct ZeroAllocator {
+  static_assert(std::is_trivially_copyable_v<T>);
+  using value_type = T;
+  ZeroAllocator() = default;
+  template <class U>
+  explicit ZeroAllocator(const ZeroAllocator<U>& /*other*/) {}
+  T* allocate(std::size_t n) { return static_cast<T*>(zeroed_alloc(n * sizeof(T))); }
+  void deallocate(T* p, std::size_t n) { zeroed_free(p, n * sizeof(T)); }
+  template <class U>
+  void construct(U* /*p*/) noexcept {}  // already zero
+  template <class U, class... A>
+  void construct(U* p, A&&... a) {
+    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+  }
+  friend bool operator==(const ZeroAllocator& /*a*/, const ZeroAllocator& /*b*/) { return true; }
+};
+template <class T>
+using CellVector = std::vector<T, ZeroAllocator<T>>;
+
+/// A per-cell array of a trivial type, all bytes zero at the start (zeroed_alloc): the cells a
+/// run never touches cost no time (a std::vector would write every cell). Copies copy the
+/// contents.
 template <class T>
 class ZeroedArray {
   static_assert(std::is_trivially_copyable_v<T>);
@@ -60,8 +92,8 @@ class ZeroedArray {
     data_.reset();
     size_ = 0;
     if (n == 0) return;
-    data_.reset(static_cast<T*>(std::calloc(n, sizeof(T))));
-    if (!data_) throw std::bad_alloc();
+    data_ = std::unique_ptr<T[], Free>(static_cast<T*>(zeroed_alloc(n * sizeof(T))),
+                                       Free{n * sizeof(T)});
     size_ = n;
   }
   [[nodiscard]] std::size_t size() const { return size_; }
@@ -70,7 +102,8 @@ class ZeroedArray {
 
  private:
   struct Free {
-    void operator()(T* p) const { std::free(p); }
+    std::size_t bytes = 0;
+    void operator()(T* p) const { zeroed_free(p, bytes); }
   };
   void copy_from(const ZeroedArray& o) {
     reset(o.size_);
@@ -79,6 +112,9 @@ class ZeroedArray {
   std::unique_ptr<T[], Free> data_;
   std::size_t size_ = 0;
 };
+
+/// An index range holding every cell.
+inline constexpr std::pair<std::size_t, std::size_t> kAllCells{0, ~std::size_t{0}};
 
 /// A cell whose value changed, with its value before the change.
 struct Delta {
@@ -91,7 +127,10 @@ class ParallelThinning {
   explicit ParallelThinning(const PaddedRaster& r) : r_(r) {}
 
   /// Full run on `in` (1 = cell of the input set); key: per padded cell (squared clearance).
-  void build(const std::vector<std::uint8_t>& in, const std::vector<std::int64_t>& key);
+  /// span: an index range [first, second) known to hold every cell of the set (only it is
+  /// scanned).
+  void build(const CellVector<std::uint8_t>& in, const CellVector<std::int64_t>& key,
+             std::pair<std::size_t, std::size_t> span = kAllCells);
   /// `in` has already changed at in_changes (with their old values); key_changes lists the cells
   /// whose key changed. Returns the output cells that changed (with their old values).
   /// fixed_point (optional): a superset F of `in` in which no cell is removable (the output of
@@ -100,12 +139,12 @@ class ParallelThinning {
   /// before), so the changes farther than 2 cells from every such cell, in the stored run and
   /// in the new one, cannot change any decision: they are not replayed (the re-thinning after a
   /// pruning round then costs what the pruning changed, not what the first thinning changed).
-  std::vector<Delta> update(const std::vector<std::uint8_t>& in,
+  std::vector<Delta> update(const CellVector<std::uint8_t>& in,
                             const std::vector<Delta>& in_changes,
-                            const std::vector<std::int64_t>& key,
+                            const CellVector<std::int64_t>& key,
                             const std::vector<std::size_t>& key_changes, std::size_t* work,
-                            const std::vector<std::uint8_t>* fixed_point = nullptr);
-  [[nodiscard]] const std::vector<std::uint8_t>& out() const { return out_; }
+                            const CellVector<std::uint8_t>* fixed_point = nullptr);
+  [[nodiscard]] const CellVector<std::uint8_t>& out() const { return out_; }
   /// Of the last update with a fixed point: the changes and key changes that started dormant,
   /// and those of them that a removal nearby woke up (replayed after all).
   [[nodiscard]] std::size_t last_dormant() const { return last_dormant_; }
@@ -115,7 +154,7 @@ class ParallelThinning {
 
  private:
   static constexpr std::int32_t kNever = 0x7fffffff;
-  [[nodiscard]] bool removable(const std::vector<std::uint8_t>& in, std::size_t c, int t) const;
+  [[nodiscard]] bool removable(const CellVector<std::uint8_t>& in, std::size_t c, int t) const;
   // Removal step of cell c (kNever: kept), stored as kNever - step so that 0 means kept.
   [[nodiscard]] std::int32_t removed_at(std::size_t c) const { return kNever - cells_[c].removed; }
   void set_removed(std::size_t c, std::int32_t t) { cells_[c].removed = kNever - t; }
@@ -129,8 +168,8 @@ class ParallelThinning {
   }
 
   PaddedRaster r_;
-  const std::vector<std::int64_t>* key_ = nullptr;  // set for the duration of build/update
-  std::vector<std::uint8_t> out_;
+  const CellVector<std::int64_t>* key_ = nullptr;  // set for the duration of build/update
+  CellVector<std::uint8_t> out_;
   int steps_ = 0;  // >= 1 + the last step that removed a cell
   std::size_t last_dormant_ = 0, last_woken_ = 0;
   // Per cell, side by side so that a replay, which visits scattered cells, reads one cache line
@@ -181,25 +220,25 @@ class ParallelPruning {
 
   /// d2: squared clearance per padded cell; max_len: an upper bound on every spur threshold
   /// (walks stop there).
-  void build(const std::vector<std::uint8_t>& in, const std::vector<std::int64_t>& d2,
-             double max_len);
-  std::vector<Delta> update(const std::vector<std::uint8_t>& in,
+  void build(const CellVector<std::uint8_t>& in, const CellVector<std::int64_t>& d2, double max_len,
+             std::pair<std::size_t, std::size_t> span = kAllCells);
+  std::vector<Delta> update(const CellVector<std::uint8_t>& in,
                             const std::vector<Delta>& in_changes,
-                            const std::vector<std::int64_t>& d2,
+                            const CellVector<std::int64_t>& d2,
                             const std::vector<std::size_t>& key_changes, double max_len,
                             std::size_t* work);
-  [[nodiscard]] const std::vector<std::uint8_t>& out() const { return out_; }
+  [[nodiscard]] const CellVector<std::uint8_t>& out() const { return out_; }
 
  private:
   // Walks from end e; true (and the cells to remove in path) when the spur is pruned.
-  bool walk(const std::vector<std::uint8_t>& in, std::size_t e, double max_len,
+  bool walk(const CellVector<std::uint8_t>& in, std::size_t e, double max_len,
             std::vector<std::size_t>& path) const;
 
   PaddedRaster r_;
-  const std::vector<std::int64_t>* d2_ = nullptr;  // set for the duration of build/update
+  const CellVector<std::int64_t>* d2_ = nullptr;  // set for the duration of build/update
   double min_cells_ = 0.0;
   double ratio_ = 0.0;
-  std::vector<std::uint8_t> out_;
+  CellVector<std::uint8_t> out_;
   // Per cell, side by side (one cache line per look, not two): the end of the pruned spur
   // through it (index + 1; 0 = none) and the scratch mark of update() (queued in the current
   // epoch; 0 = never). All zero at the start: the array is allocated zeroed.

@@ -23,6 +23,12 @@ struct PaddedRaster {
 
 /// Number of skeleton cells among the 8 neighbours of i.
 int skeleton_degree(const std::vector<std::uint8_t>& skel, const PaddedRaster& r, std::size_t i);
+inline int skeleton_degree(const std::uint8_t* skel, const PaddedRaster& r, std::size_t i) {
+  int n = 0;
+  for (int k = 0; k < 8; ++k)
+    n += skel[static_cast<std::ptrdiff_t>(i) + r.offset(k)] != 0;
+  return n;
+}
 
 /// Yokoi 8-connectivity number of cell i (1 = simple cell: removing it keeps the topology).
 int yokoi8(const std::vector<std::uint8_t>& skel, const PaddedRaster& r, std::size_t i);
