@@ -163,6 +163,29 @@ TEST(NetSim, BlockedRouteIsRepairedLocallyWithFewerMessagesThanACentralizedRepla
   EXPECT_LT(d1.traffic_bytes - d0.traffic_bytes, c1.traffic_bytes - c0.traffic_bytes);
 }
 
+// path_fallback_after_retries (issue #13, fifth pass): a Path whose link retries run out (its
+// next robot left radio range in s2r3 and s2r4; here the radio loses 30 % of the packets and a
+// robot tries 3 times) goes to the multi-hop fallback of Table 3 (sent again when the relay is
+// in range, carried or held otherwise) instead of being counted lost. Without it this hall loses
+// 2 Paths and the source never gets a route.
+TEST(NetSim, APathWhoseLinkRetriesRunOutIsCarriedOn) {
+  const auto sc = testing::two_row_hall(40, std::nullopt);
+  auto run = [&](bool fallback) {
+    NetSimOptions o;
+    o.method = Method::kDecentralized;
+    o.radio.loss = 0.3;
+    o.link_retries = 2;
+    o.time_limit_s = 300.0;
+    o.path_fallback_after_retries = fallback;
+    return run_netsim(sc, o).metrics;
+  };
+  const auto off = run(false), on = run(true);
+  EXPECT_GE(off.paths_lost, 1);
+  EXPECT_EQ(on.paths_lost, 0);
+  EXPECT_TRUE(on.success);
+  EXPECT_EQ(on.route_found_by, RouteFoundBy::kRelays);
+}
+
 TEST(NetSim, SameSeedSameResult) {
   const auto sc = make_paper_run(1, 5, 3);
   NetSimOptions o;
