@@ -436,6 +436,8 @@ void run(const NetsimArgs& a) {
                          {"changes_on_route", r.changes_on_route},
                          {"replans", r.replans},
                          {"search_attempts", r.search_attempts},
+                         {"point_searches", r.point_searches},
+                         {"search_copies_ignored", r.search_copies_ignored},
                          {"repairs", r.repairs},
                          {"sent_by_type", by_type_json(r)},
                          {"simulated_s", r.simulated_s},

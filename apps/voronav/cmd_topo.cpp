@@ -33,6 +33,7 @@ struct TopoArgs {
   double passage_length = topology::TopologyOptions{}.passage_length;
   double passage_rise_ratio = topology::TopologyOptions{}.passage_rise_ratio;
   bool validate_sides = topology::TopologyOptions{}.validate_sides;
+  double room_test_elongation = topology::TopologyOptions{}.room_test_elongation;
   double min_wall_area = topology::TopologyOptions{}.min_wall_area;
   bool json = false;
   std::filesystem::path mcap;
@@ -60,6 +61,7 @@ void run(const TopoArgs& a) {
   opt.passage_length = a.passage_length;
   opt.passage_rise_ratio = a.passage_rise_ratio;
   opt.validate_sides = a.validate_sides;
+  opt.room_test_elongation = a.room_test_elongation;
   opt.min_wall_area = a.min_wall_area;
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
@@ -222,6 +224,11 @@ void setup(CLI::App& app) {
   cmd->add_option("--validate-sides", args->validate_sides,
                   "Room test: drop a critical line when a region it separates is no wider than "
                   "the line (true/false)")
+      ->capture_default_str();
+  cmd->add_option("--room-test-elongation", args->room_test_elongation,
+                  "Room test: join two sides only when one is a passage piece, area / (2 x "
+                  "widest clearance)^2 at least this (0 = any shape)")
+      ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--min-wall-area", args->min_wall_area,
                   "Obstacle pieces smaller than this [m^2] are furniture: no critical line "

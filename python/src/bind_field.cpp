@@ -249,6 +249,8 @@ void bind_field(py::module_& m) {
                      "[m^2], 0 = off; no critical point on smaller obstacle pieces")
       .def_readwrite("validate_sides", &topology::TopologyOptions::validate_sides,
                      "room test of the critical lines")
+      .def_readwrite("room_test_elongation", &topology::TopologyOptions::room_test_elongation,
+                     "the room test joins only when one side is at least this elongated")
       .def_readwrite("min_region_area", &topology::TopologyOptions::min_region_area, "[m^2]");
   py::class_<topology::CriticalPoint>(tp, "CriticalPoint")
       .def_property_readonly("cell",

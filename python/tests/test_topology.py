@@ -37,11 +37,13 @@ def test_critical_line_options_equal_cli(data, cli):
     # The passage and room-test options of seed 003's critical lines (docs/reproductions/topology.md)
     # give the same regions from Python as from the CLI, and change the regions of this plan.
     blocked = vn.binarize(office(data))
-    opts = vn.topology.TopologyOptions(passage_length=1.5, passage_rise_ratio=0.5, validate_sides=True)
+    opts = vn.topology.TopologyOptions(passage_length=1.5, passage_rise_ratio=0.5, validate_sides=True,
+                                       room_test_elongation=2.0)
     assert opts.passage_length == 1.5 and opts.passage_rise_ratio == 0.5 and opts.validate_sides
+    assert opts.room_test_elongation == 2.0
     topo = vn.topology.build_topological_map(blocked, opts)
     out = cli("topo", "--map", str(data / "floorplans/office_a.png"), "--passage-length", "1.5",
-              "--passage-rise-ratio", "0.5", "--validate-sides", "true")
+              "--passage-rise-ratio", "0.5", "--validate-sides", "true", "--room-test-elongation", "2")
     assert len(topo.regions) == out["regions"]
     assert len(topo.critical_points) == len(out["critical_points"])
     default = vn.topology.build_topological_map(blocked)

@@ -77,6 +77,8 @@ std::string metrics_to_json(const sim::NetSimMetrics& m) {
                   {"repairs_executed", m.repairs_executed},
                   {"changes_on_route", m.changes_on_route},
                   {"changes_applied", m.changes_applied},
+                  {"point_searches", m.point_searches},
+                  {"search_copies_ignored", m.search_copies_ignored},
                   {"relay_travel_m", m.relay_travel_m},
                   {"simulated_s", m.simulated_s},
                   {"wall_s", m.wall_s},
@@ -115,6 +117,8 @@ sim::NetSimMetrics metrics_from_json(const std::string& text) {
     m.repairs_executed = j.at("repairs_executed").get<int>();
     m.changes_on_route = j.at("changes_on_route").get<int>();
     m.changes_applied = j.at("changes_applied").get<int>();
+    m.point_searches = j.value("point_searches", std::uint64_t{0});
+    m.search_copies_ignored = j.value("search_copies_ignored", std::uint64_t{0});
     m.relay_travel_m = j.at("relay_travel_m").get<double>();
     m.simulated_s = j.at("simulated_s").get<double>();
     m.wall_s = j.at("wall_s").get<double>();

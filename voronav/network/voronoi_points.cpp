@@ -557,6 +557,74 @@ PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
   return s;
 }
 
+ImprovementCheck search_would_improve(std::span<const VoronoiPoint> points, const PointSearch& done,
+                                      std::span<const VoronoiPoint> added,
+                                      std::span<const double> added_start, double robot_radius_m,
+                                      std::size_t target_begin, double tolerance) {
+  if (done.cost.size() != points.size() || added_start.size() != added.size())
+    throw Error("search_would_improve", 0,
+                "expected one cost per point and one start cost per added point");
+  const std::size_t n = points.size(), k = added.size();
+  ImprovementCheck out;
+  // Costs of every point (old ones first, then the added ones) as the search over all points
+  // would lower them; only lowered points are expanded.
+  std::vector<double> cost(done.cost.begin(), done.cost.end());
+  cost.resize(n + k, std::numeric_limits<double>::infinity());
+  auto at = [&](std::size_t i) -> const VoronoiPoint& { return i < n ? points[i] : added[i - n]; };
+  using Item = std::pair<double, std::size_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  // A target is lowered: the copy is new. Another point is lowered: it is expanded.
+  auto lower = [&](std::size_t j, double c) {
+    if (j < n && j >= target_begin) {
+      if (c < cost[j] - tolerance || (!std::isfinite(cost[j]) && std::isfinite(c))) {
+        out.improves = true;
+        return true;
+      }
+      return false;
+    }
+    if (c < cost[j]) {
+      cost[j] = c;
+      open.push({c, j});
+    }
+    return false;
+  };
+  for (std::size_t a = 0; a < k; ++a) {
+    const VoronoiPoint& p = added[a];
+    double c = added_start[a];
+    bool redundant = false;
+    // Its cost through the points held (a copy can join two of them), and whether it is an
+    // exact copy of one held at no higher cost (then it changes nothing).
+    for (std::size_t i = 0; i < n; ++i) {
+      ++out.work;
+      if (!std::isfinite(cost[i])) continue;
+      const VoronoiPoint& q = points[i];
+      if (q.position == p.position && q.clearance == p.clearance && cost[i] <= c) {
+        redundant = true;
+        break;
+      }
+      if (continues_inline(q, p, robot_radius_m))
+        c = std::min(c, cost[i] + distance(q.position, p.position));
+    }
+    if (!redundant && std::isfinite(c)) {
+      cost[n + a] = c;
+      open.push({c, n + a});
+    }
+  }
+  while (!open.empty()) {
+    const double c = open.top().first;
+    const std::size_t i = open.top().second;
+    open.pop();
+    if (c > cost[i]) continue;  // lowered again since
+    const VoronoiPoint& pi = at(i);
+    for (std::size_t j = 0; j < n + k; ++j) {
+      ++out.work;
+      if (j == i || !continues_inline(pi, at(j), robot_radius_m)) continue;
+      if (lower(j, c + distance(pi.position, at(j).position))) return out;
+    }
+  }
+  return out;
+}
+
 std::vector<std::size_t> trace_points(const PointSearch& s, std::size_t last) {
   std::vector<std::size_t> chain;
   for (std::int32_t i = static_cast<std::int32_t>(last); i >= 0;

@@ -102,6 +102,29 @@ struct BoundedExtraEdges {
                                                  double robot_radius_m,
                                                  const BoundedExtraEdges& extra = {});
 
+/// Whether a copy of a Search brings anything new (seed 000, Table 2 line 4, "IF (Receive New
+/// Search Message)"; docs/reproductions/networked.md, "Table 2: which copy is new"): `done` is a
+/// finished search over `points`; the copy adds the points `added` with start costs
+/// `added_start`. The answer is what the search over `points` + `added` would give, without
+/// running it: it `improves` when some point from `target_begin` on (the robot's own points, its
+/// trail, the destination) would get a cost lower by more than `tolerance` (a point not reached
+/// before counts). The added points join the others by continues() only, and the extra edges of
+/// `done` (if any) join only points from `target_begin` on, so only a target that improves can
+/// pass an improvement on through them. An incremental Dijkstra from the added points: only
+/// points whose cost drops are expanded, an added point that is an exact copy (position,
+/// clearance) of a point already held at no higher cost is skipped, and the check stops at the
+/// first target that improves. `work` counts the pairs compared (eq. 8-9).
+struct ImprovementCheck {
+  bool improves = false;
+  std::size_t work = 0;
+};
+[[nodiscard]] ImprovementCheck search_would_improve(std::span<const VoronoiPoint> points,
+                                                    const PointSearch& done,
+                                                    std::span<const VoronoiPoint> added,
+                                                    std::span<const double> added_start,
+                                                    double robot_radius_m, std::size_t target_begin,
+                                                    double tolerance);
+
 /// Chain of point indices ending at `last` by following parents.
 [[nodiscard]] std::vector<std::size_t> trace_points(const PointSearch& s, std::size_t last);
 

@@ -282,6 +282,99 @@ TEST(VoronoiPoints, BucketedSearchMergesCopiesWithTheAllPairsResult) {
   EXPECT_EQ(s.parent[299], 1);  // from the first settled copy of (1, 0)
 }
 
+// Table 2's "new Search" check (search_would_improve) says what the search over the held points
+// plus the copy's points would say: a target (own point, trail, destination) whose cost drops by
+// more than the tolerance, or that is reached for the first time. Random sets with copies of
+// held points (cheaper, equal, dearer), points that only join two held points, and own edges.
+TEST(VoronoiPoints, ImprovementCheckAgreesWithTheSearchOverAllPoints) {
+  const double r = 0.2, tol = 1e-6;
+  const double inf = std::numeric_limits<double>::infinity();
+  int improving = 0, not_improving = 0, by_joining = 0;
+  for (std::uint64_t seed = 1; seed <= 300; ++seed) {
+    std::mt19937_64 rng(seed * 104729);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const double side = 4.0 + 12.0 * u(rng);
+    auto point = [&] {
+      return VoronoiPoint{
+          {side * u(rng), side * u(rng)}, static_cast<float>(0.3 + 1.2 * u(rng)), 0.0f};
+    };
+    const std::size_t senders = 2 + rng() % 20, own = 1 + rng() % 15;
+    std::vector<VoronoiPoint> pts;
+    std::vector<double> start;
+    for (std::size_t i = 0; i < senders; ++i) {
+      pts.push_back(point());
+      start.push_back(rng() % 4 == 0 ? inf : 10.0 * u(rng));
+    }
+    for (std::size_t i = 0; i < own; ++i) {
+      pts.push_back(point());
+      start.push_back(inf);
+    }
+    const std::size_t n = pts.size();
+    // Own edges join own points only (as a robot's straight moves in its own map).
+    auto own_edge = [&](std::size_t i, std::size_t j) {
+      return i >= senders && j >= senders && i < n && j < n && (i * 7 + j * 7) % 3 == 0;
+    };
+    const auto done = search_points(pts, start, r, own_edge);
+    std::vector<VoronoiPoint> added;
+    std::vector<double> add_start;
+    for (std::size_t k = 0, m = 1 + rng() % 6; k < m; ++k) {
+      const auto pick = rng() % 4;
+      if (pick == 0) {  // a copy of a held sender point, cheaper, equal or dearer
+        const std::size_t i = rng() % senders;
+        added.push_back(pts[i]);
+        const double c = std::isfinite(done.cost[i]) ? done.cost[i] : 5.0;
+        add_start.push_back(c + (static_cast<double>(rng() % 3) - 1.0) * 2.0 * u(rng));
+      } else if (pick == 1) {  // a point with no start of its own (it can only join others)
+        added.push_back(point());
+        add_start.push_back(inf);
+      } else {
+        added.push_back(point());
+        add_start.push_back(15.0 * u(rng));
+      }
+    }
+    const auto chk = search_would_improve(pts, done, added, add_start, r, senders, tol);
+    auto all = pts;
+    auto all_start = start;
+    all.insert(all.end(), added.begin(), added.end());
+    all_start.insert(all_start.end(), add_start.begin(), add_start.end());
+    const auto full = search_points(all, all_start, r, own_edge);
+    bool expect = false;
+    for (std::size_t t = senders; t < n; ++t)
+      if (full.cost[t] < done.cost[t] - tol) expect = true;
+    ASSERT_EQ(chk.improves, expect) << "seed " << seed;
+    EXPECT_GT(chk.work, 0u);
+    (expect ? improving : not_improving) += 1;
+    if (expect) {
+      // Did only points without a start of their own make the difference?
+      auto starts = all_start;
+      for (std::size_t k = 0; k < added.size(); ++k)
+        if (std::isfinite(add_start[k])) starts[n + k] = inf;
+      const auto joined = search_points(all, starts, r, own_edge);
+      for (std::size_t t = senders; t < n; ++t)
+        if (joined.cost[t] < done.cost[t] - tol) {
+          ++by_joining;
+          break;
+        }
+    }
+  }
+  EXPECT_GT(improving, 60);
+  EXPECT_GT(not_improving, 60);
+  EXPECT_GT(by_joining, 5);  // a copy that only joins two held points is new too
+  // The usual re-forward: the same points at the same costs is not new, and costs nothing but
+  // one comparison per held point.
+  std::vector<VoronoiPoint> pts = {{{0.0, 0.0}, 1.0f, 0.0f}, {{1.5, 0.0}, 1.0f, 0.0f}};
+  std::vector<double> start = {2.0, inf};
+  const auto done = search_points(pts, start, r);
+  std::vector<VoronoiPoint> same = {pts[0]};
+  std::vector<double> same_start = {2.0};
+  const auto chk = search_would_improve(pts, done, same, same_start, r, 1, tol);
+  EXPECT_FALSE(chk.improves);
+  EXPECT_EQ(chk.work, 1u);
+  same_start = {1.0};
+  EXPECT_TRUE(search_would_improve(pts, done, same, same_start, r, 1, tol).improves);
+  EXPECT_THROW((void)search_would_improve(pts, done, same, start, r, 1, tol), Error);
+}
+
 TEST(VoronoiPoints, BucketedSearchRejectsBadInput) {
   std::vector<VoronoiPoint> pts(2);
   std::vector<double> start(1, 0.0);

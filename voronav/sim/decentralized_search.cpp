@@ -22,6 +22,10 @@ namespace {
 /// destination than the nearest point the sender sent.
 constexpr double kHandOffM = 1.0;
 
+/// A copy of a Search is new when it lowers a cost by more than this [m] (the re-forward test
+/// below uses the same margin).
+constexpr double kCopyImproveM = 1e-6;
+
 double nearest_to(const std::vector<VoronoiPoint>& pts, Vec2 dest) {
   double d = kInf;
   for (const auto& p : pts)
@@ -163,6 +167,10 @@ bool RobotAgent::try_continue() {
   r.s_sent.clear();
   for (std::size_t i = r.s_na; i < own_end; ++i)
     if (std::isfinite(r.s_search.cost[i])) r.s_sent.push_back(i);
+  // What this search was run on (copy_is_new compares).
+  r.s_map_version = r.map.version();
+  r.s_trail_size = r.walk_trail.size();
+  ++report_.point_searches;
   return !r.s_sent.empty() || (has_dest && std::isfinite(r.s_search.cost.back()));
 }
 
@@ -273,13 +281,20 @@ void RobotAgent::on(const Header& h, const SearchMessage& m) {
   // The same search from another robot (or the source's retry).
   if (r.walk == Walk::kDestination || r.path_forwarded || (r.saved && r.saved->num == m.num))
     return;
+  if (r.s_done && !copy_is_new(m)) {
+    // Table 2 line 4, "IF (Receive New Search Message)": a copy of a Search this relay already
+    // forwarded that lowers none of its costs is not new. Ignored: no search, no forward, its
+    // points are not kept (docs/reproductions/networked.md, "Table 2: which copy is new").
+    ++report_.search_copies_ignored;
+    return;
+  }
   const Vec2 spos = neighbour_position(h.sender).value_or(r.pos);
   r.s_senders.push_back(
       {h.sender, spos, m.relays, r.s_in.open_points.size(), m.open_points.size()});
   r.s_in.open_points.insert(r.s_in.open_points.end(), m.open_points.begin(), m.open_points.end());
   if (r.s_done) {
-    // Already forwarded: re-forward when the costs improve (distributed shortest path), at most
-    // 3 times.
+    // Already forwarded and the copy is new: re-forward when the costs improve (distributed
+    // shortest path), at most 3 times.
     std::vector<std::pair<Vec2, double>> before;
     for (std::size_t i : r.s_sent)
       before.emplace_back(r.s_comb[i].position, r.s_search.cost[i]);
@@ -287,7 +302,7 @@ void RobotAgent::on(const Header& h, const SearchMessage& m) {
     bool better = r.s_sent.size() > before.size();
     for (std::size_t i : r.s_sent)
       for (const auto& [p, c] : before)
-        if (p == r.s_comb[i].position && r.s_search.cost[i] < c - 1e-6) better = true;
+        if (p == r.s_comb[i].position && r.s_search.cost[i] < c - kCopyImproveM) better = true;
     if (better) {
       ++r.reforwards;
       forward_search(h.hops);
@@ -304,6 +319,29 @@ void RobotAgent::on(const Header& h, const SearchMessage& m) {
     return;
   }
   if (r.walk == Walk::kIdle) consider_bridge(m);
+}
+
+/// Table 2's "New Search Message" for a copy of the Search this relay already forwarded: new when
+/// its points would lower the cost of one of the relay's own points, its trail or the
+/// destination (or reach one its search had not reached), checked without running the search
+/// (network::search_would_improve). When the robot's map, its trail or the points it holds
+/// changed since its last search, that search no longer says what its costs are: the copy is
+/// then handled as new (searched again), as before.
+bool RobotAgent::copy_is_new(const SearchMessage& m) {
+  auto& r = r_;
+  if (r.points_dirty || r.s_map_version != r.map.version() ||
+      r.s_trail_size != r.walk_trail.size() || r.s_na != r.s_in.open_points.size() ||
+      r.s_search.cost.size() != r.s_comb.size())
+    return true;
+  std::vector<double> start(m.open_points.size());
+  for (std::size_t i = 0; i < start.size(); ++i)
+    start[i] = m.open_points[i].cost;
+  const auto chk = timed([&] {
+    return search_would_improve(r.s_comb, r.s_search, m.open_points, start, opt().robot_radius_m,
+                                r.s_na, kCopyImproveM);
+  });
+  report_.metrics.work += chk.work;
+  return chk.improves;
 }
 
 void RobotAgent::process_search(RobotId sender, const SearchMessage& m, std::uint8_t hops) {

@@ -225,6 +225,10 @@ struct NetSimMetrics {
   int repairs_executed = 0;  ///< local Repairs (Tables 4–5) that produced a detour
   int changes_on_route = 0;  ///< obstacle changes that touched the source's route ahead
   int changes_applied = 0;   ///< obstacle changes that happened during the run
+  /// Decentralized: point searches run by all robots, and copies of an already forwarded Search
+  /// ignored as not new (Table 2 line 4; docs/reproductions/networked.md).
+  std::uint64_t point_searches = 0;
+  std::uint64_t search_copies_ignored = 0;
   double simulated_s = 0.0;
   double wall_s = 0.0;
   std::vector<RobotMetrics> robots;

@@ -54,6 +54,8 @@ NetSimMetrics aggregate_metrics(const std::vector<AgentReport>& robots, std::siz
     M.corrupt_packets += a.corrupt_packets;
     M.paths_lost += a.paths_lost;
     M.repairs_executed += a.repairs_executed;
+    M.point_searches += static_cast<std::uint64_t>(a.point_searches);
+    M.search_copies_ignored += static_cast<std::uint64_t>(a.search_copies_ignored);
     for (std::size_t t = 0; t < by_type.size(); ++t) {
       by_type[t].messages += rm.sent_by_type[t].messages;
       by_type[t].bytes += rm.sent_by_type[t].bytes;

@@ -65,6 +65,9 @@ struct AgentReport {
   int paths_lost = 0;        ///< Path messages that could not be delivered (counted, not dropped)
   int repairs_executed = 0;  ///< local Repairs (Tables 4–5) that produced a detour
   int changes_on_route = 0;  ///< (source) obstacle changes that touched its route ahead
+  int point_searches = 0;    ///< decentralized point searches run (try_continue)
+  /// Copies of an already forwarded Search ignored as not new (Table 2 line 4).
+  int search_copies_ignored = 0;
 };
 
 /// Sums the robots' reports (eq. 3–9) into the metrics of a run; `source` is the source's index.
@@ -133,6 +136,8 @@ class RobotAgent {
     std::size_t s_na = 0;             // number of sender points in s_comb
     std::vector<std::size_t> s_sent;  // sent point index -> s_comb index
     SegmentCache own_moves;           // try_continue's own-edge checks, until the map changes
+    std::uint64_t s_map_version = ~std::uint64_t{0};  // map version of the last point search
+    std::size_t s_trail_size = 0;                     // walk_trail size at the last point search
     Walk walk = Walk::kIdle;
     double walk_since_check = 0.0;
     double bridge_at = -1.0;  // when to start bridging if no continuable Search came
@@ -200,6 +205,7 @@ class RobotAgent {
   [[nodiscard]] bool dest_reached() const;
   void on(const network::Header& h, const network::SearchMessage& m);
   void process_search(network::RobotId sender, const network::SearchMessage& m, std::uint8_t hops);
+  [[nodiscard]] bool copy_is_new(const network::SearchMessage& m);
   void start_bridge();
   void after_continue(std::uint8_t hops);
   void forward_search(std::uint8_t hops);

@@ -29,6 +29,7 @@ void check_options(const TopologyOptions& o) {
   nonneg("TopologyOptions.passage_length", o.passage_length);
   nonneg("TopologyOptions.min_wall_area", o.min_wall_area);
   nonneg("TopologyOptions.passage_rise_ratio", o.passage_rise_ratio);
+  nonneg("TopologyOptions.room_test_elongation", o.room_test_elongation);
 }
 
 double sq(Cell a, Cell b) {
@@ -339,6 +340,12 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
         auto& w = widest[static_cast<std::size_t>(comp[i])];
         w = std::max(w, static_cast<double>(g.clearance[i]));
       }
+    // Elongation of a region: its area over the square around its widest inscribed disc,
+    // (2 x widest clearance)^2; about 1-2 for a room, length / width for a corridor piece.
+    auto elongation = [&](std::size_t r) {
+      const double w = 2.0 * widest[r] * res;
+      return w > 0.0 ? area[r] / (w * w) : 0.0;
+    };
     bool changed = true;
     while (changed) {
       changed = false;
@@ -351,6 +358,9 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
                                      m * (1.0 + std::max(o.rise_ratio, o.passage_rise_ratio)));
         const auto au = static_cast<std::size_t>(a), bu = static_cast<std::size_t>(b);
         if (widest[au] >= need || widest[bu] >= need) continue;
+        // Only pieces of a passage are joined: one side must be elongated (a corridor piece);
+        // two room-shaped sides behind a wide opening stay apart.
+        if (std::max(elongation(au), elongation(bu)) < o.room_test_elongation) continue;
         const std::size_t keep = area[au] >= area[bu] ? au : bu;
         const std::size_t gone = keep == au ? bu : au;
         uf.parent[gone] = static_cast<int>(keep);

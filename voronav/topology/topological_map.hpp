@@ -75,6 +75,10 @@ struct TopologyOptions {
   /// holds a cell whose clearance reaches max(clearance + min_rise, clearance x (1 +
   /// max(rise_ratio, passage_rise_ratio))): both are no wider than the line, pieces of one passage.
   bool validate_sides = false;
+  /// The room test joins two sides only when one of them is a passage piece: its elongation,
+  /// area / (2 x its widest clearance)^2, is at least this (about 1-2 for a room, length / width
+  /// for a corridor piece); two room-shaped sides behind a wide opening stay apart. 0 = any.
+  double room_test_elongation = 2.5;
   /// Regions smaller than this [m^2] are merged into a neighbour (see the file comment).
   double min_region_area = 1.0;
 };

@@ -368,6 +368,28 @@ TEST(TopologicalMap, RoomTestMergesPiecesOfOnePassage) {
   EXPECT_GT(split.regions.size(), m.regions.size());
 }
 
+TEST(TopologicalMap, RoomTestKeepsTwoRoomsBehindAWideOpening) {
+  // Two 3 x 3 m rooms side by side, joined by a 2.2 m opening in the wall between them (like
+  // Freiburg52's two bottom-left rooms): the opening is a critical line (clearance 22 cells, the
+  // rooms' 30), and neither room is wider than the room test's rise (x 1.5), so without the
+  // shape rule the test joins them. Both are room-shaped (elongation ~1), not passage pieces.
+  BinaryGrid g(GridGeometry{125, 63, 0.05, {}}, 1);
+  fill_rect(g, 1, 1, 60, 60, 0);    // room A
+  fill_rect(g, 63, 1, 122, 60, 0);  // room B
+  fill_rect(g, 61, 9, 62, 52, 0);   // the opening in the wall between them
+  TopologyOptions o;
+  o.validate_sides = true;
+  o.passage_rise_ratio = 0.5;
+  const TopologicalMap m = build_topological_map(g, o);
+  EXPECT_EQ(m.regions.size(), 2U);
+  EXPECT_NE(m.region_of(Cell{30, 30}), m.region_of(Cell{92, 30}));
+  o.room_test_elongation = 0.0;  // the earlier room test: any shape joins
+  const TopologicalMap joined = build_topological_map(g, o);
+  EXPECT_EQ(joined.regions.size(), 1U);
+  o.room_test_elongation = -1.0;
+  EXPECT_THROW((void)build_topological_map(g, o), Error);
+}
+
 TEST(TopologicalMap, NewCriticalPointOptionsAreChecked) {
   const BinaryGrid g = room_with_open_passage(false);
   for (const char* which : {"max_rise_walk", "passage_length", "passage_rise_ratio"}) {

@@ -41,7 +41,9 @@ json agent_report_json(const sim::AgentReport& a) {
           {"route_robots", a.route_robots},
           {"paths_lost", a.paths_lost},
           {"repairs_executed", a.repairs_executed},
-          {"changes_on_route", a.changes_on_route}};
+          {"changes_on_route", a.changes_on_route},
+          {"point_searches", a.point_searches},
+          {"search_copies_ignored", a.search_copies_ignored}};
 }
 sim::AgentReport agent_report_from(const json& j) {
   sim::AgentReport a;
@@ -59,6 +61,8 @@ sim::AgentReport agent_report_from(const json& j) {
   a.paths_lost = j.at("paths_lost").get<int>();
   a.repairs_executed = j.at("repairs_executed").get<int>();
   a.changes_on_route = j.at("changes_on_route").get<int>();
+  a.point_searches = j.value("point_searches", 0);
+  a.search_copies_ignored = j.value("search_copies_ignored", 0);
   return a;
 }
 

@@ -1,0 +1,116 @@
+// Table 2 of seed 000 (decentralized_search.cpp): a relay handles a Search it has not handled
+// yet, and a copy of a Search it already forwarded only when the copy is new to it, i.e. lowers
+// one of its costs. One relay in a hall, the other robots played by hand over the simulated radio.
+#include <gtest/gtest.h>
+
+#include <optional>
+
+#include "voronav/network/messages.hpp"
+#include "voronav/network/sim_radio.hpp"
+#include "voronav/sim/robot_agent.hpp"
+
+namespace voronav::sim {
+namespace {
+
+using network::RobotId;
+
+// A free hall 20 x 6 m (0.2 m cells, walls around). Robot 0 is the source (never stepped
+// here), robot 1 the relay at (8, 3) (it senses x 5..11 m), robot 2 a listener at (14, 3), closer
+// to the destination (18.5, 3): the relay hands the Search on to it, so it forwards rather than
+// walks. Robots 3 and 4 are senders near the relay.
+struct Hall {
+  NetSimScenario sc;
+  NetSimOptions opt;
+  BinaryGrid truth;
+  network::SimRadio radio;
+  std::optional<RobotAgent> relay;
+  double t = 0.0;
+  std::uint32_t msg = 1;
+
+  Hall() {
+    sc.world = OccupancyGrid(GridGeometry{100, 30, 0.2, {}}, kOccupied);
+    for (int y = 2; y < 28; ++y)
+      for (int x = 2; x < 98; ++x)
+        sc.world[Cell{x, y}] = kFree;
+    sc.robots = {{1.5, 3.0}, {8.0, 3.0}, {14.0, 3.0}, {5.0, 3.0}, {5.0, 4.0}};
+    sc.destination = {18.5, 3.0};
+    opt.method = Method::kDecentralized;
+    truth = BinaryGrid(sc.world.geometry(), 0);
+    for (std::size_t i = 0; i < truth.size(); ++i)
+      truth[i] = sc.world[i] == kFree ? 0 : 1;
+    for (std::uint32_t i = 0; i < sc.robots.size(); ++i)
+      radio.update_position(RobotId{i}, sc.robots[i]);
+    relay.emplace(AgentContext{&sc, &opt, &truth, nullptr, nullptr}, RobotId{1}, sc.robots[1],
+                  radio);
+    relay->begin();
+  }
+
+  // `from` broadcasts Search Num 1 of the source with one open point at (6, 3) (clearance
+  // 1 m, cost `cost` from the source); the relay handles what it hears.
+  void search_from(std::uint32_t from, float cost) {
+    network::SearchMessage m;
+    m.source = RobotId{0};
+    m.num = 1;
+    m.destination = sc.destination;
+    m.relays = {RobotId{0}, RobotId{from}};
+    m.open_points = {{{6.0, 3.0}, 1.0f, cost}};
+    const network::Envelope e{{RobotId{from}, network::kBroadcast, RobotId{from}, msg++, 1}, m};
+    radio.broadcast(RobotId{from}, network::encode(e));
+    t += 0.2;
+    radio.set_time(t);
+    relay->communicate(t);
+  }
+
+  // The Searches the listener heard from the relay since the last call.
+  std::vector<network::SearchMessage> forwarded() {
+    std::vector<network::SearchMessage> out;
+    radio.set_time(t + 0.1);  // (delivered after the radio latency)
+    for (const auto& p : radio.receive(RobotId{2})) {
+      const auto e = network::decode(p.bytes);
+      if (p.from == RobotId{1} && e.type() == network::MessageType::kSearch)
+        out.push_back(std::get<network::SearchMessage>(e.payload));
+    }
+    return out;
+  }
+};
+
+float cheapest(const network::SearchMessage& m) {
+  float c = 1e30f;
+  for (const auto& p : m.open_points)
+    c = std::min(c, p.cost);
+  return c;
+}
+
+TEST(DecentralizedSearch, ACopyThatLowersNoCostIsIgnoredAndOneThatDoesIsHandled) {
+  Hall h;
+  // Table 2: a new Search is searched and forwarded.
+  h.search_from(3, 10.0f);
+  auto fw = h.forwarded();
+  ASSERT_EQ(fw.size(), 1u) << "the relay continues the Search and forwards it";
+  const float first = cheapest(fw[0]);
+  EXPECT_GT(first, 10.0f);
+  EXPECT_EQ(h.relay->report().point_searches, 1);
+  // The same point at the same cost from another robot (a re-forward) and at a higher cost:
+  // neither lowers a cost of the relay, so neither is new: no search, no forward.
+  h.search_from(4, 10.0f);
+  h.search_from(4, 12.5f);
+  EXPECT_TRUE(h.forwarded().empty());
+  EXPECT_EQ(h.relay->report().point_searches, 1) << "no search for a copy that is not new";
+  EXPECT_EQ(h.relay->report().search_copies_ignored, 2);
+  // A copy that reaches the point 6 m cheaper is new: searched again and forwarded with costs
+  // 6 m lower.
+  h.search_from(4, 4.0f);
+  fw = h.forwarded();
+  ASSERT_EQ(fw.size(), 1u);
+  EXPECT_NEAR(cheapest(fw[0]), first - 6.0f, 1e-3);
+  EXPECT_EQ(h.relay->report().point_searches, 2);
+  EXPECT_EQ(h.relay->report().search_copies_ignored, 2);
+  // The first copy is now dearer than what the relay holds: ignored.
+  h.search_from(3, 10.0f);
+  EXPECT_TRUE(h.forwarded().empty());
+  EXPECT_EQ(h.relay->report().point_searches, 2);
+  EXPECT_EQ(h.relay->report().search_copies_ignored, 3);
+}
+
+}  // namespace
+}  // namespace voronav::sim
