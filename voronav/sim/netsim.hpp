@@ -136,8 +136,9 @@ struct NetSimOptions {
   bool repair_share_blocks = true;
   /// Decentralized, not in the paper: the source takes a repaired route only when no cell within
   /// the robot radius of its moves is unknown to the source and next to a cell it saw blocking
-  /// its route: there the obstacle may continue unseen (s1r7, s4r6).
-  bool repair_check_seen = true;
+  /// its route: there the obstacle may continue unseen (s1r7, s4r6). Off by default: it changed
+  /// nothing in s1r7 and s4r6, and in s2r6 it refused the answers and the source never arrived.
+  bool repair_check_seen = false;
   /// Decentralized, not in the paper: a Path whose link retries ran out (the next robot left
   /// radio range) is carried on by the multi-hop fallback of Table 3 instead of being lost.
   bool path_fallback_after_retries = true;
