@@ -197,6 +197,9 @@ void encode_payload(Writer& w, const RepairMessage& m) {
   w.points(m.whole_path);
   w.u32(m.broken_from);
   w.u32(m.broken_to);
+  w.count(m.blocked.size());
+  for (Vec2 p : m.blocked)
+    w.vec(p);
 }
 void encode_payload(Writer& w, const RequestMessage& m) {
   w.id(m.source);
@@ -274,6 +277,9 @@ Payload decode_payload(MessageType t, Reader& r) {
       if (m.broken_from > m.broken_to ||
           m.broken_to >= std::max<std::size_t>(m.whole_path.size(), 1))
         r.fail("broken range outside the whole path");
+      m.blocked.resize(r.count(8, "blocked cells"));
+      for (auto& p : m.blocked)
+        p = r.vec("blocked cell");
       return m;
     }
     case MessageType::kRequest: {

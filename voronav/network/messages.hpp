@@ -86,6 +86,9 @@ struct RepairMessage {
   std::vector<VoronoiPoint> whole_path;
   std::uint32_t broken_from = 0;
   std::uint32_t broken_to = 0;
+  /// Not in Table 4 (issue #13, option repair_share_blocks): the centres of the cells its sender
+  /// saw blocking the broken moves; receivers mark them occupied before they look for a detour.
+  std::vector<Vec2> blocked;
   friend bool operator==(const RepairMessage&, const RepairMessage&) = default;
 };
 

@@ -31,8 +31,13 @@ std::vector<Envelope> all_kinds() {
                 {RobotId{8}},
                 {3.5, -1.0}};
   v.push_back({Header{RobotId{4}, RobotId{1}, RobotId{6}, 5, 1}, p});
-  RepairMessage r{RobotId{1}, 3, {RobotId{2}}, {{{0, 0}, 1, 0}, {{1, 0}, 1, 1}, {{2, 0}, 1, 2}},
-                  0,          2};
+  RepairMessage r{RobotId{1},
+                  3,
+                  {RobotId{2}},
+                  {{{0, 0}, 1, 0}, {{1, 0}, 1, 1}, {{2, 0}, 1, 2}},
+                  0,
+                  2,
+                  {{0.5, 0.25}, {0.75, 0.25}}};
   v.push_back({Header{RobotId{2}, kBroadcast, RobotId{2}, 9, 0}, r});
   v.push_back({Header{RobotId{0}, kBroadcast, RobotId{0}, 1, 0}, RequestMessage{RobotId{0}, 1}});
   OccupancyGrid g(GridGeometry{5, 3, 0.2, {{1.0, 2.0}, 0.0}}, kUnknown);

@@ -77,6 +77,28 @@ void RobotAgent::deliver_path(PathMessage p, RobotId to, Vec2 toward,
   ++report_.paths_lost;
 }
 
+/// A Path (Table 3) sent to a robot that never acknowledged it within the link retries (it left
+/// radio range, s2r3 and s2r4 of the fourth pass): handed to the multi-hop fallback toward its
+/// next relay (path_fallback_after_retries). Returns false when it is not taken (the option is
+/// off, a repaired path, or no relay to go to): the caller counts it lost.
+bool RobotAgent::path_after_retries(const std::vector<std::uint8_t>& bytes) {
+  if (!opt().path_fallback_after_retries || opt().method != Method::kDecentralized) return false;
+  Envelope e;
+  try {
+    e = decode(bytes);
+  } catch (const Error&) {
+    return false;
+  }
+  if (e.type() != MessageType::kPath) return false;
+  PathMessage p = std::get<PathMessage>(e.payload);
+  if ((p.num & kRepairFlag) || p.relays.empty() || p.relays.back() == r_.id) return false;
+  NS_DEBUG("t=%.1f robot %u: path to %u unacknowledged, to the fallback\n", now_, r_.id.value,
+           p.relays.back().value);
+  const int lost = report_.paths_lost;
+  deliver_path(p, p.relays.back(), p.toward, true);
+  return report_.paths_lost == lost;
+}
+
 /// Each step while a Path waits: deliver it when its relay (or a closer carrier) is in range,
 /// else keep walking back toward where the relay was; count it lost after kHoldPathS.
 void RobotAgent::pending_step() {
@@ -213,6 +235,7 @@ void RobotAgent::select_path() {
     return;
   }
   out.relays = r.s_senders[sender].relays;  // delete oneself: continue toward the source
+  out.toward = r.s_senders[sender].pos;     // where the next relay was (for the fallback)
   r.saved = out;
   r.saved_cost = best;
   deliver_path(out, r.s_senders[sender].id, r.s_senders[sender].pos, false);

@@ -64,6 +64,101 @@ std::uint32_t RobotAgent::rejoin_past_block(const std::vector<VoronoiPoint>& pat
   return to;
 }
 
+/// The centres of the cells this robot knows occupied within the robot radius of the broken
+/// moves `br` of `path` (each once): what a Repair tells the others of the change
+/// (repair_share_blocks) and where the source checks answers (repair_check_seen).
+std::vector<Vec2> RobotAgent::blocking_cells(const std::vector<VoronoiPoint>& path,
+                                             std::pair<std::uint32_t, std::uint32_t> br) {
+  const auto& g = r_.map.world();
+  const double rad = opt().robot_radius_m / g.resolution - 0.01;
+  std::vector<Cell> cells;
+  for (std::uint32_t i = br.first; i < br.second && i + 1 < path.size(); ++i) {
+    const auto a = g.world_to_cell(path[i].position), b = g.world_to_cell(path[i + 1].position);
+    if (!a || !b) continue;
+    for_each_line_cell(*a, *b, [&](Cell c) {
+      for_each_disc_cell(c, rad, [&](Cell d) {
+        if (r_.map.at(d) == kOccupied) cells.push_back(d);
+        return true;
+      });
+      return true;
+    });
+  }
+  report_.metrics.work += cells.size();
+  std::sort(cells.begin(), cells.end(),
+            [](Cell a, Cell b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  std::vector<Vec2> out;
+  out.reserve(cells.size());
+  for (Cell c : cells)
+    out.push_back(g.cell_center(c));
+  return out;
+}
+
+/// Marks the cells a Repair says are blocked occupied in this robot's map (repair_share_blocks):
+/// what its sender sensed, so this robot's points and detours no longer pass through them.
+void RobotAgent::learn_blocks(const std::vector<Vec2>& blocked) {
+  const auto& g = r_.map.world();
+  bool changed = false;
+  for (Vec2 p : blocked) {
+    const auto c = g.world_to_cell(p);
+    if (!c || !g.contains(*c) || r_.map.at(*c) == kOccupied) continue;
+    r_.map.set(*c, kOccupied);
+    changed = true;
+  }
+  report_.metrics.work += blocked.size();
+  if (!changed) return;
+  r_.points_dirty = true;
+  // The break these cells cause in this robot's own saved path is the one the Repair is about:
+  // it is already being repaired, so this robot does not ask about it again (check_relay_route).
+  if (r_.saved && !is_source()) {
+    const auto& path = r_.saved->whole_path;
+    if (const auto br = find_break(path, 0))
+      relay_break_ = std::pair{path[br->first].position, path[br->second].position};
+  }
+}
+
+/// repair_check_seen: whether the moves of `ahead` (from the source's position) keep clear of
+/// where the obstacle the source saw may continue unseen: no cell within the robot radius of a
+/// move may be unknown to the source and next to (8-neighbour of) a cell that blocked its route.
+/// In s1r7 the accepted detour crossed the doorway through door cells next to the seen ones,
+/// beyond the source's sensing; a detour that passes the block through space nobody has to guess
+/// about (the hall of the Repair tests) is not affected.
+bool RobotAgent::seen_near_block(const std::vector<VoronoiPoint>& ahead) const {
+  if (!opt().repair_check_seen || block_seen_.empty()) return true;
+  const auto& g = r_.map.world();
+  const double rad = opt().robot_radius_m / g.resolution - 0.01;
+  std::vector<Cell> block;
+  for (Vec2 q : block_seen_)
+    if (const auto c = g.world_to_cell(q)) block.push_back(*c);
+  Cell lo = block.front(), hi = lo;
+  for (Cell c : block) {
+    lo = {std::min(lo.x, c.x), std::min(lo.y, c.y)};
+    hi = {std::max(hi.x, c.x), std::max(hi.y, c.y)};
+  }
+  auto next_to_block = [&](Cell d) {
+    if (d.x < lo.x - 1 || d.x > hi.x + 1 || d.y < lo.y - 1 || d.y > hi.y + 1) return false;
+    return std::any_of(block.begin(), block.end(), [&](Cell b) {
+      return std::abs(b.x - d.x) <= 1 && std::abs(b.y - d.y) <= 1;
+    });
+  };
+  Vec2 a = r_.pos;
+  for (const auto& pt : ahead) {
+    const auto ca = g.world_to_cell(a), cb = g.world_to_cell(pt.position);
+    a = pt.position;
+    if (!ca || !cb) return false;
+    bool ok = true;
+    for_each_line_cell(*ca, *cb, [&](Cell c) {
+      for_each_disc_cell(c, rad, [&](Cell d) {
+        if (r_.map.at(d) == kUnknown && next_to_block(d)) ok = false;
+        return ok;
+      });
+      return ok;
+    });
+    if (!ok) return false;
+  }
+  return true;
+}
+
 /// Shrinks the free disc of every point of `path` to the nearest cell this robot knows occupied:
 /// route points keep the clearances of the older maps they were made from, so after an obstacle
 /// change their discs may hold it, and the continuity rule would still join points across the
@@ -197,6 +292,7 @@ void RobotAgent::check_relay_route() {
   m.whole_path = path;
   m.broken_from = br->first;
   m.broken_to = to;
+  if (opt().repair_share_blocks) m.blocked = blocking_cells(path, *br);
   r.repairs_seen.insert(m.num);
   log_repair(false, "finds the route blocked and asks its neighbours (Repair message)");
   broadcast(m, 1);
@@ -206,6 +302,9 @@ void RobotAgent::on(const Header& h, const RepairMessage& m) {
   auto& r = r_;
   if (!r.repairs_seen.insert(m.num).second) return;
   if (m.broken_to >= m.whole_path.size()) return;
+  // The source does not learn them: it meets the block itself, and a relay's Repair of its route
+  // is under way (learning would make it ask again about the same break).
+  if (opt().repair_share_blocks && !is_source()) learn_blocks(m.blocked);
   auto fixed = detour(m.whole_path, m.broken_from, m.broken_to);
   NS_DEBUG("t=%.1f robot %u repair from %u: detour %zu\n", now_, r.id.value, h.sender.value,
            fixed.size());
@@ -280,7 +379,7 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
     if (!opt().repair_check_answer) return true;
     std::vector<VoronoiPoint> rest{VoronoiPoint{s.pos, 1.0f, 0.0f}};
     rest.insert(rest.end(), ahead.begin(), ahead.end());
-    return !find_break(rest, 0);
+    return !find_break(rest, 0) && seen_near_block(ahead);
   };
   auto taken = [&] {
     ++report_.repairs_executed;
@@ -352,6 +451,7 @@ void RobotAgent::check_source_route() {
            br->first, br->second, rest.size());
   ++report_.repairs;
   const std::uint32_t to = rejoin_past_block(rest, *br);
+  if (opt().repair_share_blocks || opt().repair_check_seen) block_seen_ = blocking_cells(rest, *br);
   shrink_to_map(rest);  // as in check_relay_route
   auto fixed = detour(rest, br->first, to);
   NS_DEBUG("t=%.1f source own detour %zu\n", now_, fixed.size());
@@ -373,6 +473,7 @@ void RobotAgent::check_source_route() {
   m.whole_path = rest;
   m.broken_from = br->first;
   m.broken_to = to;
+  if (opt().repair_share_blocks) m.blocked = block_seen_;
   s.repairs_seen.insert(m.num);
   log_repair(false, "is blocked and asks its neighbours (Repair message)");
   repair_out_ = m;

@@ -4,8 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <string>
+#include <variant>
 
+#include "voronav/network/sim_radio.hpp"
 #include "voronav/sim/netsim.hpp"
+#include "voronav/sim/robot_agent.hpp"
 #include "voronav/sim/test_halls.hpp"
 
 namespace voronav::sim {
@@ -86,6 +90,82 @@ TEST(DecentralizedRepair, ARelaysOwnDetourReachesTheSource) {
   ASSERT_TRUE(m.success);
   EXPECT_EQ(m.corrupt_packets, 0u);
   EXPECT_EQ(m.paths_lost, 0);
+}
+
+// repair_share_blocks (issue #13, fifth pass): a Repair carries the cells its sender saw blocking
+// the route, and a robot that has not seen the change marks them before it answers. In s2 runs 9
+// and 13 the only answer came from a robot whose map was older than the change: its detour went
+// through the closed door and the source refused it. Here robot 1 stands above a block that
+// appeared after it sensed (it has not seen it); a phantom robot asks it to repair a route along
+// the corridor's lower half. Without the cells, robot 1's detour runs through the block; with
+// them, it goes round it through the upper half.
+TEST(DecentralizedRepair, ARepairTellsItsAnswerersWhereTheRouteIsBlocked) {
+  using network::RobotId;
+  NetSimScenario sc;  // a corridor 20 x 4 m with walls along both long sides
+  sc.world = OccupancyGrid(GridGeometry{100, 20, 0.2, {}}, kFree);
+  for (int x = 0; x < 100; ++x)
+    sc.world[Cell{x, 0}] = sc.world[Cell{x, 19}] = kOccupied;
+  sc.robots = {{1.0, 2.0}, {10.0, 3.2}};
+  sc.destination = {19.0, 2.0};
+  std::vector<Cell> block;  // x 10.0-10.4 m, y 0.2-2.6 m: the lower part of the corridor
+  for (int y = 1; y < 13; ++y)
+    for (int x = 50; x < 52; ++x)
+      block.push_back({x, y});
+  const auto& g = sc.world.geometry();
+  auto answer = [&](bool share) {
+    NetSimOptions o;
+    o.method = Method::kDecentralized;
+    o.repair_share_blocks = share;
+    BinaryGrid truth = binarize(sc.world);
+    AgentContext ctx{&sc, &o, &truth, nullptr};
+    network::SimRadio radio(o.radio);
+    RobotAgent b(ctx, RobotId{1}, sc.robots[1], radio);
+    b.begin();  // senses the corridor before the change
+    for (Cell c : block)
+      truth[c] = 1;  // the change, which robot 1 does not see
+    const RobotId phantom{7};
+    radio.update_position(phantom, {8.0, 1.4});
+    network::RepairMessage m;
+    m.source = RobotId{0};
+    m.num = 77;
+    m.relays = {RobotId{0}, phantom};
+    m.whole_path = {{{8.0, 1.4}, 0.25f, 0.0f}, {{12.0, 1.4}, 0.25f, 0.0f}};
+    m.broken_from = 0;
+    m.broken_to = 1;
+    for (Cell c : block)
+      if (c.x == 50) m.blocked.push_back(g.cell_center(c));  // the front the phantom saw
+    radio.send(phantom, RobotId{1},
+               network::encode({network::Header{phantom, RobotId{1}, phantom, 1, 0}, m}));
+    std::vector<network::VoronoiPoint> got;
+    for (int k = 1; k <= 5 && got.empty(); ++k) {
+      radio.set_time(0.2 * k);
+      b.flush();
+      b.communicate(0.2 * k);
+      for (const auto& p : radio.receive(phantom)) {
+        const auto e = network::decode(p.bytes);
+        if (e.type() == network::MessageType::kPath)
+          got = std::get<network::PathMessage>(e.payload).whole_path;
+      }
+    }
+    return got;
+  };
+  // Whether a move passes over one of the cells the Repair names (x 10.0-10.2 m, y < 2.6 m).
+  auto crosses_block = [&](const std::vector<network::VoronoiPoint>& w) {
+    for (std::size_t i = 1; i < w.size(); ++i)
+      for (int k = 0; k <= 100; ++k) {
+        const Vec2 q = w[i - 1].position + (w[i].position - w[i - 1].position) * (k / 100.0);
+        if (q.x >= 10.0 && q.x < 10.2 && q.y < 2.6) return true;  // over a cell the Repair names
+      }
+    return false;
+  };
+  const auto stale = answer(false), told = answer(true);
+  ASSERT_FALSE(stale.empty()) << "robot 1 knows a way on its old map";
+  EXPECT_TRUE(crosses_block(stale)) << "its old map has no block: the way runs through it";
+  ASSERT_FALSE(told.empty()) << "robot 1 knows a way round the block";
+  std::string way;
+  for (const auto& p : told)
+    way += " (" + std::to_string(p.position.x) + ", " + std::to_string(p.position.y) + ")";
+  EXPECT_FALSE(crosses_block(told)) << way;
 }
 
 }  // namespace

@@ -129,6 +129,19 @@ struct NetSimOptions {
   /// detour re-joins the route inside or beside the new obstacle, of which it sees only the front
   /// (docs/reproductions/networked.md, fourth pass) [m]; 0 = the first point after the block.
   double repair_rejoin_m = 1.0;
+  /// Decentralized, not in the paper (issue #13, fifth pass): a Repair carries the cells its
+  /// sender saw blocking the broken moves, and every robot that receives it marks them occupied
+  /// in its own map before it looks for a detour, so a robot that has not seen the change answers
+  /// no detour through it (s2 runs 9, 13: the only answer went through the closed door).
+  bool repair_share_blocks = true;
+  /// Decentralized, not in the paper: the source takes a repaired route only when no cell within
+  /// the robot radius of its moves is unknown to the source and next to a cell it saw blocking
+  /// its route: there the obstacle may continue unseen (s1r7, s4r6). Off by default: it changed
+  /// nothing in s1r7 and s4r6, and in s2r6 it refused the answers and the source never arrived.
+  bool repair_check_seen = false;
+  /// Decentralized, not in the paper: a Path whose link retries ran out (the next robot left
+  /// radio range) is carried on by the multi-hop fallback of Table 3 instead of being lost.
+  bool path_fallback_after_retries = true;
   /// These options with the scale options the scale runs use (bench/netsim_bench.cpp):
   /// search_timeout_per_m 2.5, search_activity_s 30, keep_bridge_on_new_search,
   /// source_straight_start (already on by default) and walk_replan_whole_map

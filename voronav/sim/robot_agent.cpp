@@ -262,10 +262,13 @@ void RobotAgent::timers() {
     auto& g = outbox_[i];
     if (now_ + 1e-9 >= g.next_at) {
       if (g.tries > opt().link_retries) {
-        // A Path whose next hop never acknowledged it is lost: counted (issue #13).
-        if (peek_type(g.bytes) == static_cast<std::uint8_t>(MessageType::kPath))
-          ++report_.paths_lost;
+        // A Path whose next hop never acknowledged it goes to the multi-hop fallback of Table 3
+        // (path_fallback_after_retries); when that cannot take it, it is lost: counted.
+        Outgoing failed = std::move(g);
         outbox_.erase(outbox_.begin() + static_cast<std::ptrdiff_t>(i));
+        if (peek_type(failed.bytes) == static_cast<std::uint8_t>(MessageType::kPath) &&
+            !path_after_retries(failed.bytes))
+          ++report_.paths_lost;
         continue;
       }
       ++g.tries;

@@ -228,6 +228,7 @@ class RobotAgent {
   // decentralized: Path (Table 3)
   void deliver_path(network::PathMessage p, network::RobotId to, Vec2 toward, bool carrier);
   void pending_step();
+  bool path_after_retries(const std::vector<std::uint8_t>& bytes);
   [[nodiscard]] std::optional<Vec2> neighbour_position(network::RobotId id);
   void on(const network::Header& h, const network::PathMessage& m);
   void select_path();
@@ -240,6 +241,10 @@ class RobotAgent {
       const std::vector<network::VoronoiPoint>& path, std::size_t from);
   [[nodiscard]] std::uint32_t rejoin_past_block(const std::vector<network::VoronoiPoint>& path,
                                                 std::pair<std::uint32_t, std::uint32_t> br);
+  [[nodiscard]] std::vector<Vec2> blocking_cells(const std::vector<network::VoronoiPoint>& path,
+                                                 std::pair<std::uint32_t, std::uint32_t> br);
+  void learn_blocks(const std::vector<Vec2>& blocked);
+  [[nodiscard]] bool seen_near_block(const std::vector<network::VoronoiPoint>& ahead) const;
   void shrink_to_map(std::vector<network::VoronoiPoint>& path);
   std::vector<network::VoronoiPoint> detour(std::vector<network::VoronoiPoint> path,
                                             std::uint32_t from, std::uint32_t to);
@@ -291,6 +296,8 @@ class RobotAgent {
   double repair_resend_gap_ = 0.0;
   // Relay: the ends of the break of its saved path it already asked about (asked once).
   std::optional<std::pair<Vec2, Vec2>> relay_break_;
+  // Source: the cells that blocked its route at its latest break (repair_check_seen).
+  std::vector<Vec2> block_seen_;
   bool collecting_ = false;
   double last_ack_ = 0.0;
 };

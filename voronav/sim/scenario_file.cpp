@@ -192,6 +192,9 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
            "repair_resend_s",
            "repair_check_answer",
            "repair_rejoin_m",
+           "repair_share_blocks",
+           "repair_check_seen",
+           "path_fallback_after_retries",
            "search_timeout_per_m",
            "search_activity_s",
            "keep_bridge_on_new_search",
@@ -242,6 +245,9 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   flag("keep_bridge_on_new_search", o.keep_bridge_on_new_search);
   flag("source_straight_start", o.source_straight_start);
   flag("repair_check_answer", o.repair_check_answer);
+  flag("repair_share_blocks", o.repair_share_blocks);
+  flag("repair_check_seen", o.repair_check_seen);
+  flag("path_fallback_after_retries", o.path_fallback_after_retries);
   flag("frontier_by_points", o.frontier_by_points);
   flag("walk_replan_whole_map", o.walk_replan_whole_map);
   if (const auto m = n["seed"]) o.seed = rd.integer<std::uint64_t>(m, "options.seed", 0, kMaxU64);
@@ -481,6 +487,10 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
       << "  repair_resend_s: " << fmt(o.repair_resend_s) << "\n"
       << "  repair_check_answer: " << (o.repair_check_answer ? "true" : "false") << "\n"
       << "  repair_rejoin_m: " << fmt(o.repair_rejoin_m) << "\n"
+      << "  repair_share_blocks: " << (o.repair_share_blocks ? "true" : "false") << "\n"
+      << "  repair_check_seen: " << (o.repair_check_seen ? "true" : "false") << "\n"
+      << "  path_fallback_after_retries: " << (o.path_fallback_after_retries ? "true" : "false")
+      << "\n"
       << "  search_timeout_per_m: " << fmt(o.search_timeout_per_m) << "\n"
       << "  search_activity_s: " << fmt(o.search_activity_s) << "\n"
       << "  keep_bridge_on_new_search: " << (o.keep_bridge_on_new_search ? "true" : "false") << "\n"

@@ -59,6 +59,9 @@ void expect_same_options(const NetSimOptions& a, const NetSimOptions& b) {
   EXPECT_EQ(a.repair_resend_s, b.repair_resend_s);
   EXPECT_EQ(a.repair_check_answer, b.repair_check_answer);
   EXPECT_EQ(a.repair_rejoin_m, b.repair_rejoin_m);
+  EXPECT_EQ(a.repair_share_blocks, b.repair_share_blocks);
+  EXPECT_EQ(a.repair_check_seen, b.repair_check_seen);
+  EXPECT_EQ(a.path_fallback_after_retries, b.path_fallback_after_retries);
   EXPECT_EQ(a.search_timeout_per_m, b.search_timeout_per_m);
   EXPECT_EQ(a.search_activity_s, b.search_activity_s);
   EXPECT_EQ(a.keep_bridge_on_new_search, b.keep_bridge_on_new_search);
@@ -111,6 +114,9 @@ TEST(ScenarioFile, PaperRunWithEveryOptionSetRoundTripsExactly) {
   o.repair_resend_s = 2.5;
   o.repair_check_answer = false;
   o.repair_rejoin_m = 1.75;
+  o.repair_share_blocks = false;
+  o.repair_check_seen = false;
+  o.path_fallback_after_retries = false;
   o.search_timeout_per_m = 2.75;
   o.search_activity_s = 31.5;
   o.keep_bridge_on_new_search = true;

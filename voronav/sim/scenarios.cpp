@@ -270,10 +270,23 @@ namespace {
 /// a run of each method with it meets every change on the route ahead (changes_on_route). The
 /// choice of change k depends only on the changes before it, so runs 5, 9 and 13 of a placement
 /// share their first change and runs 9 and 13 their second.
+/// The probe runs of a scenario with its changes so far (kept between calls: the runs that end
+/// extend_changes are the start of the next extension of the same placement).
+struct Probes {
+  bool valid = false;
+  Probe c, d;
+};
+
 void extend_changes(const OfficeWorld& world, NetSimScenario& sc, int changes, double every_s,
-                    double robot_radius_m) {
+                    double robot_radius_m, Probes& probes) {
   if (static_cast<int>(sc.changes.size()) >= changes) return;
-  Probe pc = probe(sc, Method::kCentralized), pd = probe(sc, Method::kDecentralized);
+  if (!probes.valid) {
+    probes.c = probe(sc, Method::kCentralized);
+    probes.d = probe(sc, Method::kDecentralized);
+    probes.valid = true;
+  }
+  Probe& pc = probes.c;
+  Probe& pd = probes.d;
   const auto& g = world.grid.geometry();
   BinaryGrid changed = binarize(world.grid);
   for (const auto& ch : sc.changes)
@@ -388,7 +401,8 @@ void time_changes_on_routes(const OfficeWorld& world, NetSimScenario& sc, int ch
                             double every_s, double robot_radius_m) {
   sc.changes.clear();
   if (changes <= 0) return;
-  extend_changes(world, sc, changes, every_s, robot_radius_m);
+  Probes probes;
+  extend_changes(world, sc, changes, every_s, robot_radius_m, probes);
 }
 
 NetSimScenario make_paper_run(int id, int run, std::uint64_t seed) {
@@ -410,10 +424,12 @@ NetSimScenario make_paper_run(int id, int run, std::uint64_t seed) {
   struct Known {
     std::vector<ObstacleChange> changes;
     int asked = 0;  // the most changes asked for so far (fewer placed: no more candidates)
+    Probes probes;  // the probe runs with `changes` (the next extension starts from them)
   };
   static std::mutex mutex;
   static std::map<std::tuple<int, int, std::uint64_t>, Known> known;
   const std::tuple<int, int, std::uint64_t> key{id, (run - 1) % 4, seed};
+  Probes probes;
   {
     std::lock_guard lock(mutex);
     const auto it = known.find(key);
@@ -427,12 +443,13 @@ NetSimScenario make_paper_run(int id, int run, std::uint64_t seed) {
         return sc;
       }
       sc.changes = it->second.changes;
+      probes = it->second.probes;
     }
   }
-  extend_changes(world, sc, changes, po.change_every_s, po.robot_radius_m);
+  extend_changes(world, sc, changes, po.change_every_s, po.robot_radius_m, probes);
   std::lock_guard lock(mutex);
   auto& k = known[key];
-  if (changes > k.asked) k = {sc.changes, changes};
+  if (changes > k.asked) k = {sc.changes, changes, std::move(probes)};
   return sc;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "voronav/sim/scenarios.hpp"
+#include "voronav/sim/test_halls.hpp"
 
 namespace voronav::sim {
 namespace {
@@ -28,14 +29,7 @@ TEST(Scenarios, WithoutAClosableDoorTheChangeIsABoxOnBothRoutesInUse) {
   const double res = sc.world.geometry().resolution;
   EXPECT_LE((x1 - x0 + 1) * res, 0.8 + 1e-9) << "a box of at most 0.8 m";
   EXPECT_LE((y1 - y0 + 1) * res, 0.8 + 1e-9);
-  for (Method m : {Method::kCentralized, Method::kDecentralized}) {
-    NetSimOptions o;
-    o.method = m;
-    const auto r = run_netsim(sc, o).metrics;
-    EXPECT_TRUE(r.success) << to_string(m);
-    EXPECT_EQ(r.changes_applied, 1) << to_string(m);
-    EXPECT_EQ(r.changes_on_route, 1) << to_string(m) << ": the box is on the route ahead";
-  }
+  testing::expect_changes_met(sc, 1, "the box is on the route ahead");
 }
 
 // repair_rejoin_m (fourth pass of issue #13), on the run above: the source, 2 m before the box,

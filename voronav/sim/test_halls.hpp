@@ -1,9 +1,14 @@
 // Test helper (not part of the library): the hand-made hall the netsim and Repair tests share,
 // 30 m long, robots in two rows every 3.5 m, optionally with a block that closes the lower half
-// of the hall on the route ahead of the source after the first route.
+// of the hall on the route ahead of the source after the first route; and the check of a
+// Table 7 change run that the netsim and scenario tests share.
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <array>
 #include <optional>
+#include <string>
 
 #include "voronav/sim/netsim.hpp"
 
@@ -34,6 +39,24 @@ inline NetSimScenario two_row_hall(int h, std::optional<double> block_after_rout
     sc.changes.push_back(ch);
   }
   return sc;
+}
+
+/// Runs `sc` with each method (default options) and expects success and `n` obstacle changes
+/// applied, all of them on the route ahead (`why` names the case in failure messages). Returns
+/// the metrics {centralized, decentralized} for further checks.
+inline std::array<NetSimMetrics, 2> expect_changes_met(const NetSimScenario& sc, int n,
+                                                       const std::string& why) {
+  std::array<NetSimMetrics, 2> out;
+  for (Method m : {Method::kCentralized, Method::kDecentralized}) {
+    NetSimOptions o;
+    o.method = m;
+    const auto r = run_netsim(sc, o).metrics;
+    EXPECT_TRUE(r.success) << to_string(m);
+    EXPECT_EQ(r.changes_applied, n) << to_string(m);
+    EXPECT_EQ(r.changes_on_route, n) << to_string(m) << ": " << why;
+    out[m == Method::kCentralized ? 0 : 1] = r;
+  }
+  return out;
 }
 
 }  // namespace voronav::sim::testing
