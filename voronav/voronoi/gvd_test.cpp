@@ -18,6 +18,15 @@ namespace {
 using testing::fill_rect;
 using testing::random_room;
 
+/// The nine cells of the 3x3 block centred on `centre`, each set to `blocked`.
+std::vector<CellChange> block_changes(Cell centre, bool blocked) {
+  std::vector<CellChange> changes;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx)
+      changes.push_back({centre + Cell{dx, dy}, blocked});
+  return changes;
+}
+
 BinaryGrid random_cells(std::mt19937& rng, int w, int h, double p) {
   BinaryGrid g(w, h, 0);
   std::bernoulli_distribution b(p);
@@ -412,10 +421,7 @@ TEST(DynamicGvd, SparseBuildEqualsUpdatesFromAnOpenMap) {
 TEST(DynamicGvd, SmallChangeRecomputesFewRows) {
   BinaryGrid g = random_room(5, 200, 150, 10);
   DynamicGvd dyn(g);
-  std::vector<CellChange> changes;
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx)
-      changes.push_back({{100 + dx, 75 + dy}, true});
+  std::vector<CellChange> changes = block_changes({100, 75}, true);
   const GvdUpdateStats st = dyn.update(changes);
   EXPECT_EQ(st.changed_cells, 9U);
   EXPECT_LT(st.recomputed_rows, 150U);
@@ -434,10 +440,7 @@ TEST(DynamicGvd, ThinningReplaysOnlyClearanceOrderFlips) {
       for (int dx = 0; dx < 2; ++dx)
         g[p + Cell{dx, dy}] = 1;
   DynamicGvd dyn(g);
-  std::vector<CellChange> changes;
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx)
-      changes.push_back({{47 + dx, 41 + dy}, true});
+  std::vector<CellChange> changes = block_changes({47, 41}, true);
   const GvdUpdateStats st = dyn.update(changes);
   EXPECT_GT(st.thin_key_changes, 0U);
   EXPECT_LT(st.thin_key_changes, st.key_changes);
@@ -516,10 +519,7 @@ TEST(DynamicGvd, AddedBlockRescansOnlyTheCellsItsSitesCanBeat) {
   for (const Cell p : {Cell{30, 20}, Cell{125, 30}, Cell{60, 95}, Cell{110, 85}})
     fill_rect(g, p.x, p.y, p.x + 1, p.y + 1);
   DynamicGvd dyn(g);
-  std::vector<CellChange> changes;
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx)
-      changes.push_back({{72 + dx, 55 + dy}, true});
+  std::vector<CellChange> changes = block_changes({72, 55}, true);
   const GvdUpdateStats st = dyn.update(changes);
   EXPECT_GT(st.changed_distances, 2000U);
   EXPECT_LE(st.row_cells, st.changed_distances * 11 / 10);
@@ -560,10 +560,7 @@ TEST(DynamicGvd, BuildsOnReusedMemoryStartFromZero) {
         }
       }
     DynamicGvd dyn(g);  // and an update on reused memory equals a rebuild
-    std::vector<CellChange> changes;
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx)
-        changes.push_back({{130 + dx, 115 + dy}, true});
+    std::vector<CellChange> changes = block_changes({130, 115}, true);
     (void)dyn.update(changes);
     for (const CellChange& ch : changes)
       g[ch.cell] = 1;
