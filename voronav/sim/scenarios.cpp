@@ -1,6 +1,7 @@
 #include "voronav/sim/scenarios.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -275,11 +276,156 @@ namespace {
 struct Probes {
   bool valid = false;
   Probe c, d;
+  /// Entries of sc.changes per Table 7 change, in order: 1 for a change on both routes, 2 for
+  /// a pair (one on each method's route, see extend_changes).
+  std::vector<int> event_sizes;
 };
+
+/// The simulated time at which method m's run applies `ch` (changes_due).
+double change_time(const ObstacleChange& ch, Method m) {
+  return m == Method::kCentralized && ch.centralized_at_s >= 0.0 ? ch.centralized_at_s : ch.at_s;
+}
+
+/// The source position of a probe at time t (its last recorded one before or at t; the first
+/// one before the recording starts).
+Vec2 position_at(const Probe& p, double t) {
+  if (p.pos.empty()) return {};
+  const auto it = std::upper_bound(p.t.begin(), p.t.end(), t + 1e-9);
+  return it == p.t.begin() ? p.pos.front() : p.pos[static_cast<std::size_t>(it - p.t.begin()) - 1];
+}
+
+// How far before a change its source is when it happens [m], in order of preference; the side of
+// the box put down where no door can close [m]; the verified candidates per change, at most.
+constexpr double kAhead[] = {2.0, 2.5, 3.0, 1.5};
+constexpr double kBoxM = 0.8;
+constexpr int kMaxTrials = 8;
+
+/// A place on one method's route and when its source is before it (place_pair).
+struct OnRoute {
+  std::vector<Cell> cells;
+  Ahead a;
+  int rank = 0;  ///< position in the list of its method (doors first, then boxes)
+};
+
+/// The places on the route in use of probe `p` from `from` s on: the doors its source drives
+/// through, in the order it meets them, then a box every 2 m along what it drives (not in the
+/// last 1.5 m before the destination), each at every kAhead distance.
+std::vector<OnRoute> places_on_route(const OfficeWorld& world, const NetSimScenario& sc,
+                                     const BinaryGrid& changed, const Probe& p, double margin,
+                                     double from) {
+  const auto& g = world.grid.geometry();
+  std::vector<OnRoute> out;
+  auto add = [&](const std::vector<Cell>& cells) {
+    for (double ahead : kAhead) {
+      const auto a = time_before(p, g, cells, margin, ahead, from);
+      if (a.t >= 0.0) out.push_back({cells, a, 0});
+    }
+  };
+  for (const auto& door : world.doors)
+    add(door.cells);
+  std::stable_sort(out.begin(), out.end(),
+                   [](const OnRoute& a, const OnRoute& b) { return a.a.t < b.a.t; });
+  double last = -1e9;
+  for (std::size_t i = 0; i < p.pos.size(); ++i) {
+    if (p.t[i] < p.route_s + 0.5 || p.t[i] < from || p.along[i] < last + 2.0) continue;
+    if (distance(p.pos[i], sc.destination) < 1.5) break;
+    last = p.along[i];
+    const auto cells = box_cells(g, changed, p.pos[i], kBoxM);
+    if (!cells.empty()) add(cells);
+  }
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i].rank = static_cast<int>(i);
+  return out;
+}
+
+/// Where no change can be put on both routes in use (the routes share no door and no place
+/// ahead of both sources: s3 placement 3, docs/reproductions/networked.md "Table 7 changes where
+/// the routes share no place"), the change of Table 7 is a pair: the same kind of change (a door
+/// that closes, else a 0.8 m box) put on each method's route, each when that method's source is
+/// 1.5-3 m before it. Both entries happen at the same simulated times and places in both
+/// methods' runs (at_s only, no centralized_at_s), so each method meets the one on its route
+/// while the other closes off it. Pairs are tried in the order of their two places in their
+/// lists (doors before boxes, earlier before later); a pair is kept when both runs with it apply
+/// every change and meet at least one entry of it on the route ahead. Appends the pair to
+/// sc.changes and returns true, or leaves sc unchanged and returns false.
+template <typename Met>
+bool place_pair(const OfficeWorld& world, NetSimScenario& sc, double robot_radius_m,
+                BinaryGrid& changed, Probes& probes, double from, const Met& met) {
+  const auto& g = world.grid.geometry();
+  const auto dest = g.world_to_cell(sc.destination);
+  if (!dest) return false;
+  const double margin = robot_radius_m;
+  const auto on_c = places_on_route(world, sc, changed, probes.c, margin, from);
+  const auto on_d = places_on_route(world, sc, changed, probes.d, margin, from);
+  struct Pair {
+    const OnRoute *c, *d;
+  };
+  std::vector<Pair> pairs;
+  for (const auto& c : on_c)
+    for (const auto& d : on_d)
+      pairs.push_back({&c, &d});
+  std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
+    return a.c->rank + a.d->rank < b.c->rank + b.d->rank;
+  });
+  auto overlaps = [](const std::vector<Cell>& a, const std::vector<Cell>& b) {
+    return std::any_of(a.begin(), a.end(),
+                       [&](Cell c) { return std::find(b.begin(), b.end(), c) != b.end(); });
+  };
+  int trials = 0;
+  for (const auto& pr : pairs) {
+    if (trials >= kMaxTrials) break;
+    if (overlaps(pr.c->cells, pr.d->cells)) continue;
+    bool used = false;
+    for (const auto& ch : sc.changes)
+      used |= overlaps(ch.cells, pr.c->cells) || overlaps(ch.cells, pr.d->cells);
+    if (used) continue;
+    // The two entries in time order; at each, both sources (where the probes put them then)
+    // must still reach the destination with every change so far.
+    std::array<const OnRoute*, 2> e{pr.c, pr.d};
+    if (e[1]->a.t < e[0]->a.t) std::swap(e[0], e[1]);
+    BinaryGrid trial = changed;
+    bool ok = true;
+    for (const OnRoute* x : e) {
+      for (Cell c : x->cells)
+        trial[c] = 1;
+      const auto pg = planning::make_planning_grid(trial, robot_radius_m + 0.1);
+      for (const Probe* p : {&probes.c, &probes.d}) {
+        const auto at = g.world_to_cell(position_at(*p, x->a.t));
+        ok = ok && at && !pg[*at] && truth_plan(pg, *at, *dest).ok();
+      }
+    }
+    if (!ok) continue;
+    ++trials;
+    for (const OnRoute* x : e) {
+      ObstacleChange ch;
+      ch.at_s = x->a.t;  // the same time for both methods
+      ch.cells = x->cells;
+      sc.changes.push_back(std::move(ch));
+    }
+    Probe nc = probe(sc, Method::kCentralized);
+    bool kept = met(probes.c, nc, true);
+    Probe nd;
+    if (kept) {
+      nd = probe(sc, Method::kDecentralized);
+      kept = met(probes.d, nd, true);
+    }
+    if (!kept) {
+      sc.changes.resize(sc.changes.size() - 2);
+      continue;
+    }
+    probes.c = std::move(nc);
+    probes.d = std::move(nd);
+    changed = std::move(trial);
+    probes.event_sizes.push_back(2);
+    return true;
+  }
+  return false;
+}
 
 void extend_changes(const OfficeWorld& world, NetSimScenario& sc, int changes, double every_s,
                     double robot_radius_m, Probes& probes) {
-  if (static_cast<int>(sc.changes.size()) >= changes) return;
+  auto events = [&] { return static_cast<int>(probes.event_sizes.size()); };
+  if (events() >= changes) return;
   if (!probes.valid) {
     probes.c = probe(sc, Method::kCentralized);
     probes.d = probe(sc, Method::kDecentralized);
@@ -303,9 +449,6 @@ void extend_changes(const OfficeWorld& world, NetSimScenario& sc, int changes, d
   // Each candidate is checked by a run of each method with it and the changes before it: it is
   // kept only when every change is on each method's route in use when it happens (the probe
   // trajectory says where the source drives, not where the centralized plan goes then).
-  constexpr double kAhead[] = {2.0, 2.5, 3.0, 1.5};
-  constexpr double kBoxM = 0.8;
-  constexpr int kMaxTrials = 8;  // verified candidates per change, at most
   struct Cand {
     std::vector<Cell> cells;
     Ahead c, d;
@@ -313,10 +456,17 @@ void extend_changes(const OfficeWorld& world, NetSimScenario& sc, int changes, d
   const double margin = robot_radius_m;  // a source driving through passes this close
   double from_c = -1e9, from_d = -1e9;
   if (!sc.changes.empty()) {
-    from_c = sc.changes.back().centralized_at_s + every_s;
-    from_d = sc.changes.back().at_s + every_s;
+    from_c = change_time(sc.changes.back(), Method::kCentralized) + every_s;
+    from_d = change_time(sc.changes.back(), Method::kDecentralized) + every_s;
   }
-  while (static_cast<int>(sc.changes.size()) < changes) {
+  // A run with a new change meets it when every change is applied and the new one (at least one
+  // entry of a pair) is on the route ahead in addition to those before.
+  auto met = [&](const Probe& before, const Probe& after, bool pair) {
+    const int n = static_cast<int>(sc.changes.size());
+    const int on = after.changes_on_route - before.changes_on_route;
+    return after.changes_applied == n && (pair ? on >= 1 : on == 1);
+  };
+  while (events() < changes) {
     if (pc.route_s < 0.0 || pd.route_s < 0.0) return;  // no route to change: no changes
     std::vector<Cand> cands;
     auto add = [&](const std::vector<Cell>& cells) {
@@ -346,7 +496,6 @@ void extend_changes(const OfficeWorld& world, NetSimScenario& sc, int changes, d
       const auto cells = box_cells(g, changed, q, kBoxM);
       if (!cells.empty()) add(cells);
     }
-    const int want = static_cast<int>(sc.changes.size()) + 1;
     int trials = 0;
     bool placed = false;
     for (const auto& cd : cands) {
@@ -370,16 +519,13 @@ void extend_changes(const OfficeWorld& world, NetSimScenario& sc, int changes, d
       ch.centralized_at_s = cd.c.t;
       ch.cells = cd.cells;
       sc.changes.push_back(std::move(ch));
-      auto met = [&](const Probe& p) {
-        return p.changes_applied == want && p.changes_on_route == want;
-      };
       Probe nc = probe(sc, Method::kCentralized);
-      if (!met(nc)) {
+      if (!met(pc, nc, false)) {
         sc.changes.pop_back();
         continue;
       }
       Probe nd = probe(sc, Method::kDecentralized);
-      if (!met(nd)) {
+      if (!met(pd, nd, false)) {
         sc.changes.pop_back();
         continue;
       }
@@ -388,10 +534,16 @@ void extend_changes(const OfficeWorld& world, NetSimScenario& sc, int changes, d
       changed = std::move(trial);
       from_c = cd.c.t + every_s;
       from_d = cd.d.t + every_s;
+      probes.event_sizes.push_back(1);
       placed = true;
       break;
     }
+    if (!placed)
+      placed =
+          place_pair(world, sc, robot_radius_m, changed, probes, std::max(from_c, from_d), met);
     if (!placed) return;
+    from_c = std::max(from_c, change_time(sc.changes.back(), Method::kCentralized) + every_s);
+    from_d = std::max(from_d, change_time(sc.changes.back(), Method::kDecentralized) + every_s);
   }
 }
 
@@ -424,7 +576,7 @@ NetSimScenario make_paper_run(int id, int run, std::uint64_t seed) {
   struct Known {
     std::vector<ObstacleChange> changes;
     int asked = 0;  // the most changes asked for so far (fewer placed: no more candidates)
-    Probes probes;  // the probe runs with `changes` (the next extension starts from them)
+    Probes probes;  // the probe runs with `changes` and its Table 7 changes (event_sizes)
   };
   static std::mutex mutex;
   static std::map<std::tuple<int, int, std::uint64_t>, Known> known;
@@ -434,12 +586,15 @@ NetSimScenario make_paper_run(int id, int run, std::uint64_t seed) {
     std::lock_guard lock(mutex);
     const auto it = known.find(key);
     if (it != known.end()) {
-      const bool exhausted = static_cast<int>(it->second.changes.size()) < it->second.asked;
+      const auto& sizes = it->second.probes.event_sizes;
+      const bool exhausted = static_cast<int>(sizes.size()) < it->second.asked;
       if (it->second.asked >= changes || exhausted) {
+        // The entries of its first `changes` Table 7 changes (a pair has two).
+        std::size_t n = 0;
+        for (std::size_t k = 0; k < sizes.size() && static_cast<int>(k) < changes; ++k)
+          n += static_cast<std::size_t>(sizes[k]);
         sc.changes.assign(it->second.changes.begin(),
-                          it->second.changes.begin() +
-                              std::min<std::ptrdiff_t>(
-                                  changes, static_cast<std::ptrdiff_t>(it->second.changes.size())));
+                          it->second.changes.begin() + static_cast<std::ptrdiff_t>(n));
         return sc;
       }
       sc.changes = it->second.changes;

@@ -66,3 +66,77 @@ TEST(Scenarios, TheBoxOfRunSixIsPassedByARepairThatReJoinsTheRoutePastIt) {
 
 }  // namespace
 }  // namespace voronav::sim
+
+namespace voronav::sim {
+namespace {
+
+/// A 30 x 14 m hall split by a block (x 6..24 m, y 6..10 m) into a lower corridor, the straight
+/// way from the source (3, 4) to the destination (27, 4), and an upper one. Robots stand only in
+/// the upper corridor and at its ends, so the relays know the upper way and nobody has sensed the
+/// lower one: the decentralized route goes up, while the centralized source plans through the
+/// unknown lower corridor (unknown counts as free) and drives straight. The two routes share no
+/// door (there is none) and no place ahead of both sources.
+OfficeWorld two_corridor_hall() {
+  OfficeWorld w;
+  w.grid = OccupancyGrid(GridGeometry{150, 70, 0.2, {}}, kOccupied);
+  for (int y = 2; y < 68; ++y)
+    for (int x = 2; x < 148; ++x) {
+      const bool block = x >= 30 && x < 120 && y >= 30 && y < 50;
+      w.grid[Cell{x, y}] = block ? kOccupied : kFree;
+    }
+  return w;
+}
+
+NetSimScenario two_corridor_scenario(const OfficeWorld& w) {
+  NetSimScenario sc;
+  sc.world = w.grid;
+  sc.robots = {{3.0, 4.0}, {3.0, 8.0}, {27.0, 6.5}, {27.0, 10.0}};
+  for (double x = 6.0; x < 25.0; x += 3.5)
+    sc.robots.push_back({x, 11.8});
+  sc.source = 0;
+  sc.destination = {27.0, 4.0};
+  return sc;
+}
+
+// Issue #13: where the two methods' routes share no place (s3 runs 7, 11, 15 had no change), the
+// Table 7 change is a pair, one on each method's route, at the same times and places for both
+// methods. Without the pair rule this hall gets no change at all.
+TEST(Scenarios, WhereTheRoutesShareNoPlaceEachMethodsRouteGetsOneOfAPair) {
+  const auto w = two_corridor_hall();
+  auto sc = two_corridor_scenario(w);
+  time_changes_on_routes(w, sc, 1, 4.0, 0.2);
+  ASSERT_EQ(sc.changes.size(), 2u) << "a pair: one change on each route";
+  for (const auto& ch : sc.changes) {
+    EXPECT_GE(ch.at_s, 0.0);
+    EXPECT_LT(ch.centralized_at_s, 0.0) << "no time of its own for the centralized method";
+    // Identical times for both methods: due at the same step, not a step before.
+    for (Method m : {Method::kCentralized, Method::kDecentralized}) {
+      EXPECT_TRUE(changes_due(sc, 1.0, ch.at_s - 0.2, 0, m).size() < sc.changes.size());
+      EXPECT_FALSE(changes_due(sc, 1.0, ch.at_s, 0, m).empty());
+    }
+  }
+  EXPECT_LE(sc.changes[0].at_s, sc.changes[1].at_s);
+  // One entry on the straight way along y = 4 m (the centralized route), the other off it, on
+  // the decentralized source's way up to the upper corridor.
+  auto mean_y = [&](const ObstacleChange& ch) {
+    double y = 0.0;
+    for (Cell c : ch.cells)
+      y += sc.world.geometry().cell_center(c).y;
+    return y / static_cast<double>(ch.cells.size());
+  };
+  const double lo = std::min(mean_y(sc.changes[0]), mean_y(sc.changes[1]));
+  const double hi = std::max(mean_y(sc.changes[0]), mean_y(sc.changes[1]));
+  EXPECT_NEAR(lo, 4.0, 0.5) << "on the centralized route";
+  EXPECT_GT(hi, 5.5) << "off the centralized route";
+  for (Method m : {Method::kCentralized, Method::kDecentralized}) {
+    NetSimOptions o;
+    o.method = m;
+    const auto r = run_netsim(sc, o).metrics;
+    EXPECT_TRUE(r.success) << to_string(m);
+    EXPECT_EQ(r.changes_applied, 2) << to_string(m);
+    EXPECT_GE(r.changes_on_route, 1) << to_string(m) << ": the entry on its route is met";
+  }
+}
+
+}  // namespace
+}  // namespace voronav::sim
