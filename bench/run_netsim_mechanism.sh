@@ -87,6 +87,23 @@ for s, j in data.items():
             cells.append(f"{mb(lambda r: r['changes_applied'] == 0):.0f} / {mb(lambda r: r['changes_applied'] > 0):.0f}")
         print(f"| {s} | {meth} | " + " | ".join(cells) + " |")
 print()
+print("Repair per change run (decentralized; absent in JSON from before stop 17: `?`): Repairs "
+      "started by the source / by all robots, detours sent back by answerers, repaired routes that "
+      "reached the source / that it refused as blocked in its own map, Repairs executed, success.")
+print()
+print("| scenario | run | source asked / all asked | answers sent | reached source / refused | "
+      "executed | arrived | searches |")
+print("|---|---|---|---|---|---|---|---|")
+g = lambda r, k: r.get(k, "?")
+for s, j in data.items():
+    for r in j["decentralized"]["per_run"]:
+        if r["changes_applied"] == 0:
+            continue
+        print(f"| {s} | {r['run']} | {g(r, 'source_repair_requests')} / {g(r, 'repair_requests')} | "
+              f"{g(r, 'repair_answers')} | {g(r, 'repair_answers_received')} / "
+              f"{g(r, 'repair_answers_refused')} | {r['repairs_executed']} | "
+              f"{'yes' if r['success'] else 'no'} | {r['search_attempts']} |")
+print()
 print("Change runs: changes placed / on the route (centralized, decentralized), Repairs executed "
       "(decentralized), traffic [B] and messages sent by kind (`kind count`, all robots).")
 print()

@@ -125,6 +125,7 @@ nlohmann::json summary_json(const sim::Summary& s) {
 nlohmann::json mechanism_json(const std::vector<sim::NetSimMetrics>& runs) {
   nlohmann::json by = {{"relays", 0}, {"source_alone", 0}, {"none", 0}};
   int lost = 0, repairs = 0, change_runs = 0, hit = 0, ok = 0;
+  int asked = 0, answered = 0, repaired = 0;  // change runs with a Repair asked / answered / taken
   double route = 0.0, source = 0.0, relay = 0.0;
   for (const auto& r : runs) {
     by[std::string(sim::to_string(r.route_found_by))] =
@@ -134,6 +135,9 @@ nlohmann::json mechanism_json(const std::vector<sim::NetSimMetrics>& runs) {
     if (r.changes_applied > 0) {
       ++change_runs;
       hit += r.changes_on_route > 0 ? 1 : 0;
+      asked += r.repair_requests > 0 ? 1 : 0;
+      answered += r.repair_answers > 0 ? 1 : 0;
+      repaired += r.repairs_executed > 0 ? 1 : 0;
     }
     if (r.success) {
       ++ok;
@@ -143,10 +147,17 @@ nlohmann::json mechanism_json(const std::vector<sim::NetSimMetrics>& runs) {
     }
   }
   const double n = std::max(ok, 1);
-  return {{"route_found_by", by},          {"paths_lost", lost},
-          {"repairs_executed", repairs},   {"change_runs", change_runs},
-          {"change_runs_on_route", hit},   {"route_length_m", route / n},
-          {"source_travel_m", source / n}, {"relay_travel_m", relay / n}};
+  return {{"route_found_by", by},
+          {"paths_lost", lost},
+          {"repairs_executed", repairs},
+          {"change_runs", change_runs},
+          {"change_runs_on_route", hit},
+          {"change_runs_repair_asked", asked},
+          {"change_runs_repair_answered", answered},
+          {"change_runs_repaired", repaired},
+          {"route_length_m", route / n},
+          {"source_travel_m", source / n},
+          {"relay_travel_m", relay / n}};
 }
 
 std::vector<sim::Method> methods_of(const std::string& method) {
@@ -431,6 +442,11 @@ void run(const NetsimArgs& a) {
                          {"route_robots", r.route_robots},
                          {"paths_lost", r.paths_lost},
                          {"repairs_executed", r.repairs_executed},
+                         {"repair_requests", r.repair_requests},
+                         {"source_repair_requests", r.source_repair_requests},
+                         {"repair_answers", r.repair_answers},
+                         {"repair_answers_received", r.repair_answers_received},
+                         {"repair_answers_refused", r.repair_answers_refused},
                          {"changes", sc.changes.size()},
                          {"changes_applied", r.changes_applied},
                          {"changes_on_route", r.changes_on_route},

@@ -75,6 +75,11 @@ std::string metrics_to_json(const sim::NetSimMetrics& m) {
                   {"route_robots", m.route_robots},
                   {"paths_lost", m.paths_lost},
                   {"repairs_executed", m.repairs_executed},
+                  {"repair_requests", m.repair_requests},
+                  {"source_repair_requests", m.source_repair_requests},
+                  {"repair_answers", m.repair_answers},
+                  {"repair_answers_received", m.repair_answers_received},
+                  {"repair_answers_refused", m.repair_answers_refused},
                   {"changes_on_route", m.changes_on_route},
                   {"changes_applied", m.changes_applied},
                   {"point_searches", m.point_searches},
@@ -115,6 +120,11 @@ sim::NetSimMetrics metrics_from_json(const std::string& text) {
     m.route_robots = j.at("route_robots").get<int>();
     m.paths_lost = j.at("paths_lost").get<int>();
     m.repairs_executed = j.at("repairs_executed").get<int>();
+    m.repair_requests = j.value("repair_requests", 0);
+    m.source_repair_requests = j.value("source_repair_requests", 0);
+    m.repair_answers = j.value("repair_answers", 0);
+    m.repair_answers_received = j.value("repair_answers_received", 0);
+    m.repair_answers_refused = j.value("repair_answers_refused", 0);
     m.changes_on_route = j.at("changes_on_route").get<int>();
     m.changes_applied = j.at("changes_applied").get<int>();
     m.point_searches = j.value("point_searches", std::uint64_t{0});

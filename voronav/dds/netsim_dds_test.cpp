@@ -42,6 +42,12 @@ TEST(NetsimDds, MetricsJsonRoundTrips) {
   m.repairs = 1;
   m.replans = 0;
   m.corrupt_packets = 5;
+  m.repairs_executed = 2;
+  m.repair_requests = 7;
+  m.source_repair_requests = 3;
+  m.repair_answers = 4;
+  m.repair_answers_received = 5;
+  m.repair_answers_refused = 1;
   m.simulated_s = 51.2;
   m.wall_s = 3.5;
   sim::RobotMetrics r;
@@ -65,6 +71,12 @@ TEST(NetsimDds, MetricsJsonRoundTrips) {
   EXPECT_EQ(back.by_type.at("path").messages, 3u);
   EXPECT_EQ(back.search_attempts, 2);
   EXPECT_EQ(back.corrupt_packets, 5u);
+  EXPECT_EQ(back.repairs_executed, 2);
+  EXPECT_EQ(back.repair_requests, 7);
+  EXPECT_EQ(back.source_repair_requests, 3);
+  EXPECT_EQ(back.repair_answers, 4);
+  EXPECT_EQ(back.repair_answers_received, 5);
+  EXPECT_EQ(back.repair_answers_refused, 1);
   ASSERT_EQ(back.robots.size(), 2u);
   EXPECT_EQ(back.robots[0].work, 99u);
   EXPECT_EQ(back.robots[0].sent_by_type[1].bytes, 600u);

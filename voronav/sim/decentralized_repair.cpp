@@ -281,7 +281,10 @@ void RobotAgent::check_relay_route() {
     r.saved->whole_path = fixed;
     r.saved->owners.clear();
     relay_break_.reset();
-    if (!p.relays.empty()) send_reliable(p.relays.back(), p);
+    if (!p.relays.empty()) {
+      ++report_.repair_answers;
+      send_reliable(p.relays.back(), p);
+    }
     return;
   }
   RepairMessage m;
@@ -294,6 +297,7 @@ void RobotAgent::check_relay_route() {
   m.broken_to = to;
   if (opt().repair_share_blocks) m.blocked = blocking_cells(path, *br);
   r.repairs_seen.insert(m.num);
+  ++report_.repair_requests;
   log_repair(false, "finds the route blocked and asks its neighbours (Repair message)");
   broadcast(m, 1);
 }
@@ -316,6 +320,7 @@ void RobotAgent::on(const Header& h, const RepairMessage& m) {
     p.num = next_repair_num();
     p.relays = m.relays;
     p.whole_path = fixed;
+    ++report_.repair_answers;
     if (is_source()) {
       on_repair_path(p, r.id);
     } else {
@@ -329,6 +334,7 @@ void RobotAgent::on(const Header& h, const RepairMessage& m) {
 void RobotAgent::on_repair_path(PathMessage m, RobotId from) {
   auto& r = r_;
   if (is_source()) {
+    ++report_.repair_answers_received;
     splice_route(m.whole_path, from);
     return;
   }
@@ -393,6 +399,7 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
     if (!repair_out_) return false;  // already answered: the first answer won
     const std::vector<VoronoiPoint> ahead(whole.begin() + 1, whole.end());
     if (!free_ahead(ahead)) {
+      ++report_.repair_answers_refused;
       NS_DEBUG("t=%.1f source ignores robot %u's detour (blocked in its map)\n", now_, from.value);
       return false;
     }
@@ -412,8 +419,10 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
       n.insert(n.end(), whole.begin(), whole.end());
       const std::size_t next = std::max<std::size_t>(done, 1) - 1;
       if (!free_ahead(std::vector<VoronoiPoint>(
-              n.begin() + static_cast<std::ptrdiff_t>(std::min(next, n.size())), n.end())))
+              n.begin() + static_cast<std::ptrdiff_t>(std::min(next, n.size())), n.end()))) {
+        ++report_.repair_answers_refused;
         return false;
+      }
       route_ = std::move(n);
       set_source_waypoints(next);
       s.waypoints.insert(s.waypoints.begin(), s.pos);
@@ -475,6 +484,7 @@ void RobotAgent::check_source_route() {
   m.broken_to = to;
   if (opt().repair_share_blocks) m.blocked = block_seen_;
   s.repairs_seen.insert(m.num);
+  ++report_.repair_requests;
   log_repair(false, "is blocked and asks its neighbours (Repair message)");
   repair_out_ = m;
   repair_resend_gap_ = opt().repair_resend_s;

@@ -74,6 +74,14 @@ TEST(DecentralizedRepair, SeveralRobotsKnowADetourAndTheSourceTakesOneAnswer) {
     if (r.robot == 0 && r.what.find("takes robot") != std::string::npos) ++taken;
   EXPECT_GE(taken, 1);
   EXPECT_LE(taken, 2);
+  // The Repair counters of the run (issue #13: asked vs answered vs taken, reported per run):
+  // every break that needed help started one Repair, answers were sent, and the source received
+  // at least the answers it took.
+  EXPECT_EQ(m.repair_requests, c.asked_events);
+  EXPECT_GE(m.repair_answers, 1);
+  EXPECT_GE(m.repair_answers_received, taken);
+  EXPECT_LE(m.repair_answers_refused, m.repair_answers_received);
+  EXPECT_LE(m.source_repair_requests, m.repair_requests);
   // Every robot handles a Repair once (Table 4 line 1, "New Repair Message"): no robot sends
   // the same Repair twice, so there are at most as many Repair transmissions as robots.
   EXPECT_LE(c.repairs_sent, static_cast<int>(c.res.recording.steps.front().positions.size()));

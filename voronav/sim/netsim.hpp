@@ -224,6 +224,10 @@ struct NetSimMetrics {
   int route_robots = 0;      ///< robots whose open points are on the first route
   int paths_lost = 0;        ///< Path messages that could not be delivered
   int repairs_executed = 0;  ///< local Repairs (Tables 4–5) that produced a detour
+  /// Repair traffic (robot_agent.hpp AgentReport): Repair messages started by all robots and by
+  /// the source, detours sent back, and repaired routes that reached the source / it refused.
+  int repair_requests = 0, source_repair_requests = 0, repair_answers = 0;
+  int repair_answers_received = 0, repair_answers_refused = 0;
   int changes_on_route = 0;  ///< obstacle changes that touched the source's route ahead
   int changes_applied = 0;   ///< obstacle changes that happened during the run
   /// Decentralized: point searches run by all robots, and copies of an already forwarded Search

@@ -54,6 +54,8 @@ NetSimMetrics aggregate_metrics(const std::vector<AgentReport>& robots, std::siz
     M.corrupt_packets += a.corrupt_packets;
     M.paths_lost += a.paths_lost;
     M.repairs_executed += a.repairs_executed;
+    M.repair_requests += a.repair_requests;
+    M.repair_answers += a.repair_answers;
     M.point_searches += static_cast<std::uint64_t>(a.point_searches);
     M.search_copies_ignored += static_cast<std::uint64_t>(a.search_copies_ignored);
     for (std::size_t t = 0; t < by_type.size(); ++t) {
@@ -88,6 +90,9 @@ NetSimMetrics aggregate_metrics(const std::vector<AgentReport>& robots, std::siz
     M.route_found_by = s.found_by;
     M.route_robots = s.route_robots;
     M.changes_on_route = s.changes_on_route;
+    M.source_repair_requests = s.repair_requests;
+    M.repair_answers_received = s.repair_answers_received;
+    M.repair_answers_refused = s.repair_answers_refused;
   }
   return M;
 }

@@ -64,6 +64,11 @@ struct AgentReport {
   // Every robot.
   int paths_lost = 0;        ///< Path messages that could not be delivered (counted, not dropped)
   int repairs_executed = 0;  ///< local Repairs (Tables 4–5) that produced a detour
+  /// Repair traffic, traced (issue #13): Repair messages this robot started (Tables 4–5 line 1,
+  /// not the re-sends), detours it sent back (an answer, or a relay's own detour), and (source)
+  /// the repaired routes that reached it and those it refused as blocked in its own map.
+  int repair_requests = 0, repair_answers = 0;
+  int repair_answers_received = 0, repair_answers_refused = 0;
   int changes_on_route = 0;  ///< (source) obstacle changes that touched its route ahead
   int point_searches = 0;    ///< decentralized point searches run (try_continue)
   /// Copies of an already forwarded Search ignored as not new (Table 2 line 4).

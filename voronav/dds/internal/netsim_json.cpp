@@ -41,6 +41,10 @@ json agent_report_json(const sim::AgentReport& a) {
           {"route_robots", a.route_robots},
           {"paths_lost", a.paths_lost},
           {"repairs_executed", a.repairs_executed},
+          {"repair_requests", a.repair_requests},
+          {"repair_answers", a.repair_answers},
+          {"repair_answers_received", a.repair_answers_received},
+          {"repair_answers_refused", a.repair_answers_refused},
           {"changes_on_route", a.changes_on_route},
           {"point_searches", a.point_searches},
           {"search_copies_ignored", a.search_copies_ignored}};
@@ -60,6 +64,10 @@ sim::AgentReport agent_report_from(const json& j) {
   a.route_robots = j.at("route_robots").get<int>();
   a.paths_lost = j.at("paths_lost").get<int>();
   a.repairs_executed = j.at("repairs_executed").get<int>();
+  a.repair_requests = j.value("repair_requests", 0);
+  a.repair_answers = j.value("repair_answers", 0);
+  a.repair_answers_received = j.value("repair_answers_received", 0);
+  a.repair_answers_refused = j.value("repair_answers_refused", 0);
   a.changes_on_route = j.at("changes_on_route").get<int>();
   a.point_searches = j.value("point_searches", 0);
   a.search_copies_ignored = j.value("search_copies_ignored", 0);
