@@ -10,7 +10,8 @@ namespace {
 BinaryGrid random_grid(std::mt19937& rng, int w, int h, double p) {
   BinaryGrid g(w, h, 0);
   std::bernoulli_distribution b(p);
-  for (std::size_t i = 0; i < g.size(); ++i) g[i] = b(rng) ? 1 : 0;
+  for (std::size_t i = 0; i < g.size(); ++i)
+    g[i] = b(rng) ? 1 : 0;
   return g;
 }
 
@@ -27,7 +28,8 @@ TEST(DistanceTransform, EqualsBruteForceOnRandomMaps) {
           double best = HUGE_VAL;
           for (int yy = 0; yy < h; ++yy)
             for (int xx = 0; xx < w; ++xx)
-              if (g[Cell{xx, yy}]) best = std::min(best, double((x - xx) * (x - xx) + (y - yy) * (y - yy)));
+              if (g[Cell{xx, yy}])
+                best = std::min(best, double((x - xx) * (x - xx) + (y - yy) * (y - yy)));
           if (border) {
             best = std::min({best, double((x + 1) * (x + 1)), double((w - x) * (w - x)),
                              double((y + 1) * (y + 1)), double((h - y) * (h - y))});
@@ -71,6 +73,32 @@ TEST(Inflate, BlocksCellsCloserThanRadius) {
   EXPECT_EQ(inflate(g, 0.0), g);
   EXPECT_THROW((void)inflate(g, -1.0), Error);
   EXPECT_THROW((void)inflate(g, std::nan("")), Error);
+}
+
+TEST(Inflate, SmallRadiiGiveTheSameGridAsTheDistanceTransform) {
+  // inflate() spreads blocked cells directly for radii up to 8 cells: the grid must be the one the
+  // EDT definition gives (blocked, or squared distance < r^2), on random maps, at the grid's
+  // edges, and for radii that are and are not whole cells (0.3 / 0.1 is just below 3 cells).
+  std::mt19937 rng(7);
+  int spread = 0;
+  for (int seed = 0; seed < 80; ++seed) {
+    const int w = 1 + static_cast<int>(rng() % 30), h = 1 + static_cast<int>(rng() % 30);
+    const BinaryGrid cells = random_grid(rng, w, h, 0.02 + 0.5 * (seed % 5) / 4.0);
+    BinaryGrid g(w, h, 0, 0.1);
+    for (std::size_t i = 0; i < g.size(); ++i)
+      g[i] = cells[i];
+    const DistanceField df = distance_transform(g);
+    for (double r : {0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.45, 0.8, 0.85}) {
+      const BinaryGrid inf = inflate(g, r);
+      const double r2 = (r / 0.1) * (r / 0.1);
+      for (std::size_t i = 0; i < g.size(); ++i) {
+        const bool want = g[i] != 0 || static_cast<double>(df.squared_distance[i]) < r2;
+        ASSERT_EQ(inf[i] != 0, want) << "seed " << seed << " r " << r << " cell " << i;
+        spread += (want && g[i] == 0) ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(spread, 1000);  // the radii did block free cells
 }
 
 }  // namespace
