@@ -58,8 +58,7 @@ struct Envelope1D {
     }
     int j = 0;
     for (int q = 0; q < n; ++q) {
-      while (z[static_cast<std::size_t>(j) + 1] < q)
-        ++j;
+      while (z[static_cast<std::size_t>(j) + 1] < q) ++j;
       const int p = v[static_cast<std::size_t>(j)];
       d[q] = double(q - p) * (q - p) + f[p];
       arg[q] = p;
@@ -73,8 +72,7 @@ double DistanceField::distance_m(Cell c) const {
   return std::sqrt(static_cast<double>(squared_distance[c])) * squared_distance.resolution();
 }
 
-DistanceField distance_transform(const BinaryGrid& blocked,
-                                 const DistanceTransformOptions& options) {
+DistanceField distance_transform(const BinaryGrid& blocked, const DistanceTransformOptions& options) {
   const GridGeometry& g = blocked.geometry();
   const int w = g.width, h = g.height;
   DistanceField out{GridMap<float>(g, kInf), GridMap<std::int32_t>(g, kNoSite)};
@@ -96,8 +94,7 @@ DistanceField distance_transform(const BinaryGrid& blocked,
     std::vector<int> arg(static_cast<std::size_t>(H));
     Envelope1D env;
     for (int x = 0; x < W; ++x) {
-      for (int y = 0; y < H; ++y)
-        f[static_cast<std::size_t>(y)] = is_site(x, y) ? 0.0 : HUGE_VAL;
+      for (int y = 0; y < H; ++y) f[static_cast<std::size_t>(y)] = is_site(x, y) ? 0.0 : HUGE_VAL;
       env.run(f.data(), H, d.data(), arg.data());
       for (int y = 0; y < H; ++y) {
         col_d[static_cast<std::size_t>(y) * W + x] = d[static_cast<std::size_t>(y)];
@@ -169,8 +166,8 @@ BinaryGrid dilate(const BinaryGrid& blocked, double r2) {
 
 BinaryGrid inflate(const BinaryGrid& blocked, double radius_m) {
   if (std::isnan(radius_m) || radius_m < 0.0)
-    throw Error("radius", 0,
-                "expected a non-negative number of metres, got " + std::to_string(radius_m));
+    throw Error("radius", 0, "expected a non-negative number of metres, got " +
+                                 std::to_string(radius_m));
   if (radius_m == 0.0 || blocked.empty()) return blocked;
   const double r_cells = radius_m / blocked.resolution();
   const double r2 = r_cells * r_cells;

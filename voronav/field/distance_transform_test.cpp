@@ -10,8 +10,7 @@ namespace {
 BinaryGrid random_grid(std::mt19937& rng, int w, int h, double p) {
   BinaryGrid g(w, h, 0);
   std::bernoulli_distribution b(p);
-  for (std::size_t i = 0; i < g.size(); ++i)
-    g[i] = b(rng) ? 1 : 0;
+  for (std::size_t i = 0; i < g.size(); ++i) g[i] = b(rng) ? 1 : 0;
   return g;
 }
 
@@ -28,8 +27,7 @@ TEST(DistanceTransform, EqualsBruteForceOnRandomMaps) {
           double best = HUGE_VAL;
           for (int yy = 0; yy < h; ++yy)
             for (int xx = 0; xx < w; ++xx)
-              if (g[Cell{xx, yy}])
-                best = std::min(best, double((x - xx) * (x - xx) + (y - yy) * (y - yy)));
+              if (g[Cell{xx, yy}]) best = std::min(best, double((x - xx) * (x - xx) + (y - yy) * (y - yy)));
           if (border) {
             best = std::min({best, double((x + 1) * (x + 1)), double((w - x) * (w - x)),
                              double((y + 1) * (y + 1)), double((h - y) * (h - y))});
