@@ -52,6 +52,23 @@ TEST(DistanceTransform, EqualsBruteForceOnRandomMaps) {
   }
 }
 
+TEST(DistanceTransform, ATieGoesToTheLowerSiteOfTheColumn) {
+  // One column, sites at rows 0 and 4: row 2 is 2 cells from both and names row 0 (the lower
+  // parabola of the envelope), row 3 names row 4; a column without sites has none.
+  BinaryGrid g(2, 7, 0);
+  g[Cell{0, 0}] = 1;
+  g[Cell{0, 4}] = 1;
+  const DistanceField df = distance_transform(g);
+  EXPECT_EQ((df.nearest[Cell{0, 2}]), static_cast<std::int32_t>(g.index(Cell{0, 0})));
+  EXPECT_EQ((df.nearest[Cell{0, 3}]), static_cast<std::int32_t>(g.index(Cell{0, 4})));
+  EXPECT_EQ((df.nearest[Cell{0, 6}]), static_cast<std::int32_t>(g.index(Cell{0, 4})));
+  EXPECT_EQ((df.squared_distance[Cell{0, 2}]), 4.0f);
+  EXPECT_EQ((df.squared_distance[Cell{0, 6}]), 4.0f);
+  // Column 1 has no site: its cells take the nearest of column 0 through the row pass.
+  EXPECT_EQ((df.nearest[Cell{1, 2}]), static_cast<std::int32_t>(g.index(Cell{0, 0})));
+  EXPECT_EQ((df.squared_distance[Cell{1, 2}]), 5.0f);
+}
+
 TEST(DistanceTransform, EmptyAndAllFree) {
   const DistanceField e = distance_transform(BinaryGrid{});
   EXPECT_TRUE(e.squared_distance.empty());
