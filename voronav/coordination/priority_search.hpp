@@ -69,9 +69,14 @@ enum class ThreeOptOrder {
   /// from the new critical robot after each improvement; stops at a local optimum of this
   /// neighbourhood or at the same N (N - 1) cap.
   kCriticalFirst,
+  /// kCriticalFirst, and at its local optimum the same moves for every delayed robot (latest
+  /// completion first; internal::delayed_moves()), accepted when (makespan, sum of arrivals)
+  /// improves; an improvement returns to the critical moves. Stops at a local optimum of both
+  /// lists or at the N (N - 1) cap.
+  kCriticalDelayed,
 };
 [[nodiscard]] std::string_view to_string(ThreeOptOrder o);
-/// Parses "paper", "critical-first"; throws voronav::Error otherwise.
+/// Parses "paper", "critical-first", "critical-delayed"; throws voronav::Error otherwise.
 [[nodiscard]] ThreeOptOrder parse_three_opt_order(std::string_view s);
 
 /// Genetic algorithm parameters; defaults are the paper's (section 5.1, 5.2.2).
@@ -88,6 +93,10 @@ struct GaOptions {
   bool truncation = false;
   double convergence = 1e-4;  ///< stop when the best makespan changes less (relative)
   int max_rounds = 50;        ///< hard limit on rounds
+  /// 0: the convergence rule above (the best makespan of two consecutive rounds). > 0: stop
+  /// instead when the best makespan has not improved by more than `convergence` (relative) for
+  /// this many generations in a row (max_rounds still applies).
+  int stall_generations = 0;
   /// Population size; 0 = the number of robots searched (the paper's "N random orders").
   int population = 0;
   /// 3-opt attempts per child; 0 = N (N - 1) as in the paper; < 0 disables 3-opt.
@@ -127,6 +136,8 @@ struct SearchResult {
   std::size_t three_opt_improvements = 0;  ///< 3-opt moves accepted (all children)
   std::size_t three_opt_local_optima = 0;  ///< children whose 3-opt ended at a local optimum
   std::size_t three_opt_exact_cuts = 0;    ///< random moves skipped: they cannot lower the makespan
+  /// Of three_opt_improvements, the moves taken by the delayed-robot sweep (kCriticalDelayed).
+  std::size_t three_opt_delayed_improvements = 0;
 };
 
 /// True when (makespan, sum_of_arrivals) of a is better than b (with a 1e-9 tolerance).
