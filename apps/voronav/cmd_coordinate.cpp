@@ -50,6 +50,7 @@ struct CoordArgs {
   int ga_threads = 0;
   int ga_population = 0;
   int ga_stall = 0;
+  int ga_delayed_gate = 0;
   double node_spacing = -1.0;
   bool no_reduction = false;
   bool json = false;
@@ -361,6 +362,7 @@ void run(const CoordArgs& a) {
   opt.search.ga.threads = a.ga_threads;
   opt.search.ga.population = a.ga_population;
   opt.search.ga.stall_generations = a.ga_stall;
+  opt.search.ga.delayed_gate = a.ga_delayed_gate;
   opt.search.edf_reduction = !a.no_reduction;
   const co::CoordinationResult r = co::coordinate(agents, opt);
 
@@ -534,6 +536,11 @@ void setup(CLI::App& app) {
   cmd->add_option("--ga-stall", a->ga_stall,
                   "GA: 0 = the paper's stop rule (two rounds of 20 crossovers with the same best "
                   "makespan); G > 0 = stop after G generations without a better makespan")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--ga-delayed-gate", a->ga_delayed_gate,
+                  "GA, critical-delayed: 0 = sweeps on every child; K > 0 = only on children "
+                  "that critical-first makes no worse than the K-th best of the population")
       ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--ga-population", a->ga_population, "GA: population size (0 = N, the paper's)")

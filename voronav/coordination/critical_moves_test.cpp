@@ -276,6 +276,36 @@ TEST(CriticalMoves, GaCriticalDelayedSweepFires) {
   }
 }
 
+// The delayed gate: with k > 0 only the children that critical-first makes no worse than the k-th
+// best get the sweeps, so fewer orders are evaluated and fewer sweep moves taken than with the
+// sweeps on every child; the result stays deterministic and thread-count independent.
+TEST(CriticalMoves, GaDelayedGateSpendsTheSweepsOnTheBestChildren) {
+  int fewer = 0;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const MdNetwork net = random_network(30, 90, seed);
+    SearchOptions so;
+    so.edf_reduction = false;
+    so.ga.seed = seed;
+    so.ga.three_opt_order = ThreeOptOrder::kCriticalDelayed;
+    so.ga.threads = 1;
+    const auto all = search_priority(net, so);
+    so.ga.delayed_gate = 1;
+    const auto gated = search_priority(net, so);
+    so.ga.threads = 2;
+    const auto gated2 = search_priority(net, so);
+    EXPECT_EQ(gated.order, gated2.order);
+    EXPECT_EQ(gated.evaluations, gated2.evaluations);
+    EXPECT_EQ(gated.three_opt_delayed_improvements, gated2.three_opt_delayed_improvements);
+    EXPECT_EQ(resolve(net, gated.order).makespan, gated.resolution.makespan);
+    EXPECT_LE(gated.three_opt_delayed_improvements, all.three_opt_delayed_improvements);
+    fewer += gated.evaluations < all.evaluations ? 1 : 0;
+  }
+  EXPECT_GE(fewer, 3);
+  GaOptions bad;
+  bad.delayed_gate = -1;
+  EXPECT_THROW((void)genetic_search(random_network(5, 10, 1), {0, 1, 2, 3, 4}, {}, {}, bad), Error);
+}
+
 // The stall rule: the GA runs until `stall_generations` generations brought no better makespan,
 // so the last rounds repeat the best; a negative value is refused.
 TEST(CriticalMoves, GaStallRuleStopsAfterGenerationsWithoutImprovement) {

@@ -384,7 +384,7 @@ class Ga {
         }
       }
       if (improved) continue;
-      if (o_.three_opt_order == ThreeOptOrder::kCriticalDelayed &&
+      if (o_.three_opt_order == ThreeOptOrder::kCriticalDelayed && !no_delayed_ &&
           ind.res.status == ResolveStatus::kOk && delayed_sweep(ind, rank, base_order, budget)) {
         continue;
       }
@@ -459,9 +459,26 @@ class Ga {
     return false;
   }
 
-  void three_opt(Individual& ind) {
+  /// The resolution a child must match for the delayed sweeps (GaOptions::delayed_gate): the
+  /// gate-th best of the population the parents come from; nullptr = no gate.
+  const Resolution* gate_of(const std::vector<Individual>& pop, int pop_size) const {
+    if (o_.delayed_gate <= 0 || o_.three_opt_order != ThreeOptOrder::kCriticalDelayed)
+      return nullptr;
+    return &pop[static_cast<std::size_t>(std::min(o_.delayed_gate, pop_size) - 1)].res;
+  }
+
+  /// The child's local search; with a gate (kCriticalDelayed), critical-first first and the
+  /// delayed sweeps only when the child is then no worse than the gate.
+  void three_opt(Individual& ind, const Resolution* gate = nullptr) {
     if (n_ < 3 || o_.three_opt_iterations < 0) return;
-    if (o_.three_opt_order != ThreeOptOrder::kPaper) {
+    if (gate != nullptr && o_.three_opt_order == ThreeOptOrder::kCriticalDelayed) {
+      no_delayed_ = true;
+      const std::size_t optima = local_optima_;
+      three_opt_critical(ind);
+      local_optima_ = optima;  // counted once, by the pass that ends the search
+      no_delayed_ = false;
+      if (!better(*gate, ind.res)) three_opt_critical(ind);
+    } else if (o_.three_opt_order != ThreeOptOrder::kPaper) {
       three_opt_critical(ind);
     } else {
       three_opt_random(ind, three_opt_budget(), false);
@@ -470,14 +487,14 @@ class Ga {
 
   /// One child of parents pa, pb: DPX, mutation with the mutation rate, 3-opt; every random
   /// draw from the stream `seed`.
-  Individual make_child(const std::vector<int>& pa, const std::vector<int>& pb,
-                        std::uint64_t seed) {
+  Individual make_child(const std::vector<int>& pa, const std::vector<int>& pb, std::uint64_t seed,
+                        const Resolution* gate) {
     rng_.seed(seed);
     std::vector<int> child = ops_.dpx(pa, pb, rng_);
     if (unit() < o_.mutation_rate)
       child = ops_.mutate(child, o_.mutation_min_edges, o_.mutation_max_edges, rng_);
     Individual ind = make(std::move(child));
-    three_opt(ind);
+    three_opt(ind, gate);
     return ind;
   }
 
@@ -499,12 +516,13 @@ class Ga {
       seeds[static_cast<std::size_t>(c)] = rng_();
     }
     children.assign(static_cast<std::size_t>(count), Individual{});
+    const Resolution* gate = gate_of(pop, pop_size);
     // An exception on a worker (bad_alloc, an Error) is rethrown here, on the caller's thread.
     internal::run_strided(count, static_cast<int>(helpers.size()), [&](int t, int c) {
       const auto uc = static_cast<std::size_t>(c);
       children[uc] = helpers[static_cast<std::size_t>(t)]->make_child(
           pop[static_cast<std::size_t>(pa[uc])].seq, pop[static_cast<std::size_t>(pb[uc])].seq,
-          seeds[uc]);
+          seeds[uc], gate);
     });
   }
 
@@ -562,7 +580,7 @@ class Ga {
         if (unit() < o_.mutation_rate)
           child = ops_.mutate(child, o_.mutation_min_edges, o_.mutation_max_edges, rng_);
         Individual ind = make(std::move(child));
-        three_opt(ind);
+        three_opt(ind, gate_of(pop, pop_size));
         children.push_back(std::move(ind));
         ++crossovers;
       }
@@ -657,6 +675,7 @@ class Ga {
   std::size_t local_optima_ = 0;
   std::size_t cut_moves_ = 0;
   std::size_t delayed_improvements_ = 0;
+  bool no_delayed_ = false;
   std::vector<char> in_support_, scratch_;
 };
 
@@ -672,6 +691,7 @@ void check_ga_options(const GaOptions& o) {
   if (!(o.convergence >= 0.0)) bad("convergence", "expected >= 0");
   if (o.max_rounds < 1) bad("max_rounds", "expected >= 1");
   if (o.stall_generations < 0) bad("stall_generations", "expected >= 0");
+  if (o.delayed_gate < 0) bad("delayed_gate", "expected >= 0");
   if (o.three_opt_depth < 0) bad("three_opt_depth", "expected >= 0");
   if (o.three_opt_patience < 0) bad("three_opt_patience", "expected >= 0");
   if (o.threads < 0 || o.threads > 64) bad("threads", "expected 0..64");

@@ -109,6 +109,11 @@ struct GaOptions {
   /// evaluated moves in a row did not improve; an improvement returns to the critical moves.
   /// 0 = none.
   int three_opt_patience = 0;
+  /// kCriticalDelayed: 0 = every child gets the delayed sweeps. k > 0: a child first gets
+  /// critical-first alone, and the sweeps (then critical-first again) only if it is then no worse
+  /// than the k-th best order of the population its parents come from (the sweeps cost ~6x the
+  /// critical moves; this spends them on the children that can enter the top).
+  int delayed_gate = 0;
   /// 0: one RNG stream for the whole GA (the results of earlier versions). >= 1: each child of a
   /// generation (crossover, mutation, 3-opt) draws from its own stream, seeded from the main one,
   /// and the children are made on this many threads; the result is the same for every value >= 1.
