@@ -283,6 +283,34 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     if (cp.line.empty()) continue;
     out.critical_points.push_back(std::move(cp));
   }
+  // 1b. Openings in wall lines (wall_openings.hpp): closed by a critical line unless a critical
+  // line of a narrowing already crosses the opening (within half a wall's thickness + 2 cells of
+  // its closing line), which would leave a sliver between two lines.
+  if (o.wall_openings.max_width > 0.0) {
+    const int reach =
+        static_cast<int>(std::ceil(0.5 * o.wall_openings.max_wall_thickness / res)) + 2;
+    for (WallOpening& op : find_wall_openings(g.blocked, o.wall_openings)) {
+      bool crossed = false;
+      for (const Cell c : op.line) {
+        for (int dy = -reach; dy <= reach && !crossed; ++dy)
+          for (int dx = -reach; dx <= reach && !crossed; ++dx) {
+            const Cell q = c + Cell{dx, dy};
+            crossed = geo.contains(q) && cut[q] != 0;
+          }
+        if (crossed) break;
+      }
+      if (crossed) continue;
+      CriticalPoint cp;
+      cp.basis = op.jambs;
+      cp.clearance_m = 0.5 * op.width_cells * res;
+      cp.line = std::move(op.line);
+      cp.cell = cp.midpoint = cp.line[cp.line.size() / 2];
+      cp.wall_gap = true;
+      for (const Cell c : cp.line)
+        cut[c] = 1;
+      out.critical_points.push_back(std::move(cp));
+    }
+  }
 
   // 2. Regions: 4-connected components of the free cells minus the critical lines.
   GridMap<std::int32_t> comp(geo, -1);

@@ -37,6 +37,7 @@
 
 #include "voronav/core/grid_map.hpp"
 #include "voronav/core/occupancy.hpp"
+#include "voronav/topology/wall_openings.hpp"
 #include "voronav/voronoi/gvd.hpp"
 #include "voronav/voronoi/labeled_voronoi.hpp"
 
@@ -81,6 +82,10 @@ struct TopologyOptions {
   double room_test_elongation = 2.5;
   /// Regions smaller than this [m^2] are merged into a neighbour (see the file comment).
   double min_region_area = 1.0;
+  /// Openings in wall lines (wall_openings.hpp): a gap of door width between two collinear wall
+  /// faces is closed by a critical line too, unless a critical line already crosses it; off
+  /// while wall_openings.max_width is 0.
+  WallOpeningOptions wall_openings{};
 };
 
 struct CriticalPoint {
@@ -90,6 +95,7 @@ struct CriticalPoint {
   std::vector<Cell> line;     ///< free cells of the critical line (basis to basis)
   Cell midpoint;              ///< the free line cell nearest the middle of the two basis points
   bool separates = true;      ///< whether its two sides are different regions
+  bool wall_gap = false;      ///< from an opening in a wall line, not a narrowing of the diagram
 };
 
 struct Region {
