@@ -36,6 +36,7 @@ struct TopoArgs {
   double room_test_elongation = topology::TopologyOptions{}.room_test_elongation;
   double min_wall_area = topology::TopologyOptions{}.min_wall_area;
   topology::WallOpeningOptions wall = topology::TopologyOptions{}.wall_openings;
+  bool wall_first = topology::TopologyOptions{}.wall_openings_first;
   bool json = false;
   std::filesystem::path mcap;
 };
@@ -65,6 +66,7 @@ void run(const TopoArgs& a) {
   opt.room_test_elongation = a.room_test_elongation;
   opt.min_wall_area = a.min_wall_area;
   opt.wall_openings = a.wall;
+  opt.wall_openings_first = a.wall_first;
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
   const topology::TopologicalMap m = topology::build_topological_map(blocked, opt);
@@ -259,6 +261,10 @@ void setup(CLI::App& app) {
   cmd->add_option("--wall-max-thickness", args->wall.max_wall_thickness,
                   "Openings in wall lines: two opposite gaps this close [m] are one wall's faces")
       ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--wall-gap-first", args->wall_first,
+                  "Where a wall-line opening and a narrowing close the same opening, keep the "
+                  "wall line (true/false)")
       ->capture_default_str();
   cmd->add_option("--mcap", args->mcap,
                   "Write a ROS 2 bag (MCAP): /map, /voronoi, /topology (docs/ros.md)");

@@ -86,6 +86,9 @@ struct TopologyOptions {
   /// faces is closed by a critical line too, unless a critical line already crosses it; off
   /// while wall_openings.max_width is 0.
   WallOpeningOptions wall_openings{};
+  /// Where a wall-line opening and a narrowing's critical line close the same opening, keep the
+  /// wall line (true) or the narrowing's line (false).
+  bool wall_openings_first = false;
 };
 
 struct CriticalPoint {

@@ -169,7 +169,9 @@ struct Gap {
   bool used = false;
 };
 
-void check(const WallOpeningOptions& o) {
+}  // namespace
+
+void check_wall_opening_options(const WallOpeningOptions& o) {
   auto nonneg = [](const char* name, double v) {
     if (!(v >= 0.0) || !std::isfinite(v))
       throw Error(name, 0, "expected a finite number >= 0, got " + std::to_string(v));
@@ -188,8 +190,6 @@ void check(const WallOpeningOptions& o) {
                 "expected 0 (off) or at least min_width " + std::to_string(o.min_width) + ", got " +
                     std::to_string(o.max_width));
 }
-
-}  // namespace
 
 double WallSegment::length() const {
   return std::hypot(bx - ax, by - ay);
@@ -227,7 +227,7 @@ std::vector<WallSegment> wall_segments(const BinaryGrid& blocked, double fit_tol
 
 std::vector<WallOpening> find_wall_openings(const BinaryGrid& blocked,
                                             const WallOpeningOptions& o) {
-  check(o);
+  check_wall_opening_options(o);
   std::vector<WallOpening> out;
   if (o.max_width <= 0.0 || blocked.size() == 0) return out;
   const double res = blocked.geometry().resolution;

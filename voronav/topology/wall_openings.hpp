@@ -27,7 +27,7 @@ namespace voronav::topology {
 
 struct WallOpeningOptions {
   double min_width = 0.5;           ///< [m] narrowest gap that is an opening
-  double max_width = 0.0;           ///< [m] widest gap that is an opening; 0 = off (none found)
+  double max_width = 2.0;           ///< [m] widest gap that is an opening; 0 = off (none found)
   double min_wall_length = 0.5;     ///< [m] each of the two wall faces at least this long
   double max_offset = 0.1;          ///< [m] each face end within this of the other face's line
   double max_angle_deg = 10.0;      ///< [deg] the two faces' directions differ by at most this
@@ -58,6 +58,10 @@ struct WallOpening {
 [[nodiscard]] std::vector<WallSegment> wall_segments(const BinaryGrid& blocked,
                                                      double fit_tolerance_cells,
                                                      double min_length_cells);
+
+/// Throws voronav::Error naming the option when one is negative, not finite, max_angle_deg is
+/// not in [0, 90), or max_width is neither 0 nor at least min_width.
+void check_wall_opening_options(const WallOpeningOptions& options);
 
 /// The openings in wall lines (see the file comment); lengths in options are metres, converted
 /// with the grid's resolution. Empty when options.max_width is 0. Throws voronav::Error for
