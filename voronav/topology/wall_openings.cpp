@@ -84,10 +84,16 @@ class Boundary {
                            0);
     std::vector<P> pts;
     std::vector<int> dirs;
-    for (int y = 0; y <= h_; ++y)
-      for (int x = 0; x <= w_; ++x)
+    // Every boundary edge borders a free cell: start from the free cells' blocked neighbours.
+    const int start_dx[4] = {0, 1, 1, 0}, start_dy[4] = {0, 0, 1, 1};  // the edge's first vertex
+    const Cell nb[4] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};  // the blocked neighbour of each edge
+    for (int fy = 0; fy < h_; ++fy)
+      for (int fx = 0; fx < w_; ++fx) {
+        if (blocked_[Cell{fx, fy}]) continue;
         for (int d = 0; d < 4; ++d) {
-          if (seen[index(x, y, d)] || !crack(x, y, d)) continue;
+          if (!is_blocked(fx + nb[d].x, fy + nb[d].y)) continue;
+          const int x = fx + start_dx[d], y = fy + start_dy[d];
+          if (seen[index(x, y, d)]) continue;
           pts.clear();
           dirs.clear();
           int cx = x, cy = y, cd = d;
@@ -110,6 +116,7 @@ class Boundary {
           }
           visit(pts, dirs);
         }
+      }
   }
 
  private:
