@@ -16,6 +16,9 @@
 //    critical points on obstacle pieces under min_wall_area (furniture) are dropped; and the room
 //    test (validate_sides) drops a line when neither region it separates holds a cell whose
 //    clearance reaches that rise (two pieces of one passage).
+//    Openings in wall lines (issue #15, on by default; wall_openings.hpp): a door-width gap
+//    between two collinear wall faces, or between a wall stub's end and the wall ahead of it,
+//    is a critical line too (CriticalPoint::wall_gap), unless a narrowing's line is next to it.
 //  - critical line: the Bresenham segment between the two basis points.
 //  - regions: the free cells cut by the critical lines, 4-connected components; the cells of the
 //    lines join the smallest adjacent region. Merge rule: a region smaller than min_region_area
