@@ -38,7 +38,7 @@ struct Agent {
   AgentMode mode = AgentMode::kReactive;
   std::vector<Vec2> route;
   std::size_t next = 0;
-  double blocked_time = 0.0;
+  double blocked_time = 0.0;  // [s] wanted to drive forward but took no forward step
   double since_progress = 0.0;
   double reactive_until = 0.0;         // [s] a deadlocked robot searches reactively until then
   std::optional<Vec2> goal;            // frontier goal
@@ -385,7 +385,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     a.route = std::move(route);
     a.next = 0;
     a.mode = a.route.empty() ? AgentMode::kReactive : AgentMode::kFollow;
-    a.blocked_time = 0.0;
+    // Not the block clock: a new route does not unblock a robot (below, "Only a forward step").
     a.since_progress = 0.0;
     a.unsticking = false;
   };
@@ -580,11 +580,11 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         continue;
       }
       a.legs.front() = path;
-      // Same goal, new route: the robot's block and progress clocks go on (resetting them let a
-      // robot that the route check re-routed every 2 s stand still for minutes; willow, 16).
-      const double blocked_for = a.blocked_time, no_progress = a.since_progress;
+      // Same goal, new route: the robot's progress clock goes on (resetting it, and the block
+      // clock, let a robot that the route check re-routed every 2 s stand still for minutes;
+      // willow, 16).
+      const double no_progress = a.since_progress;
       start_follow(a, std::move(path));
-      a.blocked_time = blocked_for;
       a.since_progress = no_progress;
     }
   };
@@ -707,13 +707,14 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   // plans around a robot in its way, and a goal reachable only through a crowd costs the detour
   // or is out of reach this round. Without it 16 robots on willow crowded into the corridors
   // at the last frontiers and jammed there (stalled robots). Returns the cells to restore.
-  const auto mark_others = [&](std::size_t i) {
+  const auto mark_others_on = [&](BinaryGrid& grid, std::size_t i) {
     std::vector<Vec2> others_at;
     for (std::size_t j = 0; j < agents.size(); ++j)
       if (j != i) others_at.push_back(agents[j]->body.true_pose().position);
-    return block_robot_discs(trav, agents[i]->body.true_pose().position, others_at,
+    return block_robot_discs(grid, agents[i]->body.true_pose().position, others_at,
                              2.0 * body + 0.05, kRobotAwareRange);
   };
+  const auto mark_others = [&](std::size_t i) { return mark_others_on(trav, i); };
   const auto unmark = [&](const std::vector<std::size_t>& marked) {
     restore_free_cells(trav, marked);
   };
@@ -755,12 +756,16 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         return false;
       };
       if (fr.size() > n_frontiers) {
+        // Leaves are costed robot-aware too, as the frontiers below: without it leaf routes ran
+        // head-on through robots in a doorway and jammed there (willow, 16 robots, issue 14).
+        const std::vector<std::size_t> marked_opt = mark_others_on(opt, active[r]);
         const auto from = nearest_free(opt, pos);
         if (from && flood_opt.flood(opt, *from, planning::Connectivity::k8) > 0)
           for (std::size_t f = n_frontiers; f < fr.size(); ++f) {
             const std::int32_t s = flood_opt.steps(opt, fr[f].target);
             if (s >= 0 && !banned(fr[f].centroid)) costs[r][f] = s * g.resolution;
           }
+        restore_free_cells(opt, marked_opt);
       }
       const std::vector<std::size_t> marked = mark_others(active[r]);
       const auto from = nearest_free(trav, pos);
@@ -799,7 +804,9 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         // A tree leaf: the route runs through unknown space, so it is planned afresh from where
         // the robot is at every allocation (a route the map has since blocked is replaced).
         const bool same = a.goal_leaf && a.goal && distance(*a.goal, fr[k].centroid) < 0.5;
+        const std::vector<std::size_t> marked_opt = mark_others_on(opt, active[r]);
         std::vector<Vec2> path = path_on(opt, a.body.true_pose().position, fr[k].centroid);
+        restore_free_cells(opt, marked_opt);
         if (path.empty()) continue;
         if (!same) ++result.leaf_goals;
         a.goal = fr[k].centroid;
@@ -954,8 +961,6 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
                 if (distance(agents[j]->body.true_pose().position, pose.position) <
                     2.0 * body + 0.3)
                   a.back_off_until = t + 2.0;
-          } else if (!a.on_tree) {
-            a.blocked_time = 0.0;  // frontier goals: as before issue 14's tree trace (below)
           }
           if (t < a.back_off_until) cmd = {-0.1, 0.0};
           a.since_progress += o.dt;
@@ -992,9 +997,12 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           if (cmd.omega == 0.0) cmd.omega = o.controller.obs_avoid;
           a.blocked_time += o.dt;
         } else if (cmd.v > 0.0) {
-          // Only a forward step that is taken ends a block. (The guard's 13 beams may see a
-          // clear front while the footprint check refuses: resetting on the guard alone kept a
-          // following robot standing still until the 20 s watchdog; willow, 16 robots, tree.)
+          // Only a forward step that is taken ends a block, for every method: not a step the
+          // guard lets through (its 13 beams may see a clear front while the footprint check
+          // refuses) and not a new route. Either reset kept a robot standing still with the 3 s
+          // block rule never firing: a tree leg until the 20 s watchdog (willow, 16 robots,
+          // tree), and tree-frontier robots whose allocation changed goal every 2 s in a doorway
+          // jam for 60 s and more (issue 14, fifth pass).
           a.blocked_time = 0.0;
         }
       }

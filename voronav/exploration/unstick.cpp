@@ -16,15 +16,21 @@ std::optional<Cell> unstick_target(const BinaryGrid& grid, const planning::BfsFl
   std::optional<Cell> best;
   double best_clear = -1.0;
   std::int32_t best_steps = 0;
-  for (std::size_t k = 0; k < grid.size(); ++k) {
-    const Cell c = grid.cell_at(k);
+  std::int32_t best_index = 0;
+  // Only the cells the flood reached, in its order (steps never decrease): stop past max_path.
+  for (const std::int32_t k : flood.reached()) {
+    const Cell c = grid.cell_at(static_cast<std::size_t>(k));
     const std::int32_t st = flood.steps(grid, c);
-    if (st < lo || st > hi) continue;
+    if (st > hi) break;
+    if (st < lo) continue;
     const double cl = std::min(o.clearance_cap, clear.distance_m(c));
-    if (cl > best_clear + 1e-9 || (std::abs(cl - best_clear) <= 1e-9 && st < best_steps)) {
+    const bool tie = std::abs(cl - best_clear) <= 1e-9;
+    if (cl > best_clear + 1e-9 ||
+        (tie && (st < best_steps || (st == best_steps && k < best_index)))) {
       best = c;
       best_clear = cl;
       best_steps = st;
+      best_index = k;
     }
   }
   return best;

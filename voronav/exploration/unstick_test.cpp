@@ -65,5 +65,46 @@ TEST(Unstick, BoxedInHasNoTarget) {
   EXPECT_FALSE(unstick_target(g, flood, clear).has_value());
 }
 
+// unstick_target scans only the flood's reached cells (BfsFlood::reached), so that list must be
+// exactly the cells with a step count, in non-decreasing step order, the start first.
+TEST(Unstick, FloodListsExactlyTheReachedCellsInStepOrder) {
+  BinaryGrid g = corridor_and_room();
+  for (int y = 9; y <= 11; ++y)
+    g[Cell{7, y}] = 1;  // cut the corridor: columns 0..6 are not reached from the room
+  planning::BfsFlood flood;
+  const std::size_t n = flood.flood(g, Cell{30, 10}, planning::Connectivity::k8);
+  const auto reached = flood.reached();
+  ASSERT_EQ(reached.size(), n);
+  ASSERT_EQ(n, 20u * 20u + 12u * 3u);  // the room and corridor columns 8..19
+  EXPECT_EQ(g.cell_at(static_cast<std::size_t>(reached[0])), (Cell{30, 10}));
+  std::size_t with_steps = 0;
+  for (std::size_t k = 0; k < g.size(); ++k)
+    with_steps += flood.steps(g, g.cell_at(k)) >= 0 ? 1 : 0;
+  EXPECT_EQ(with_steps, n);
+  for (std::size_t k = 1; k < reached.size(); ++k)
+    ASSERT_LE(flood.steps(g, g.cell_at(static_cast<std::size_t>(reached[k - 1]))),
+              flood.steps(g, g.cell_at(static_cast<std::size_t>(reached[k]))));
+  // A blocked start reaches nothing, and the list says so.
+  EXPECT_EQ(flood.flood(g, Cell{0, 0}, planning::Connectivity::k8), 0u);
+  EXPECT_TRUE(flood.reached().empty());
+}
+
+// Equal clearance and equal path length: the lower cell index wins (the rule of the whole-grid
+// scan this replaced, which met cells in index order). 41 x 41 cells of 0.1 m with a blocked
+// border, start in the middle: every cell 10 steps away with >= 1 m clearance ties; the lowest
+// index among them is (10, 10) (1 m from the walls at x = 0 and y = 0).
+TEST(Unstick, TiesGoToTheLowerCellIndex) {
+  BinaryGrid g(GridGeometry{41, 41, 0.1, {}}, 0);
+  for (int k = 0; k < 41; ++k) {
+    g[Cell{k, 0}] = g[Cell{k, 40}] = 1;
+    g[Cell{0, k}] = g[Cell{40, k}] = 1;
+  }
+  planning::BfsFlood flood;
+  ASSERT_GT(flood.flood(g, Cell{20, 20}, planning::Connectivity::k8), 0u);
+  const auto t = unstick_target(g, flood, field::distance_transform(g));
+  ASSERT_TRUE(t.has_value());
+  EXPECT_EQ(*t, (Cell{10, 10}));
+}
+
 }  // namespace
 }  // namespace voronav::exploration

@@ -8,6 +8,7 @@ std::size_t BfsFlood::flood(const BinaryGrid& grid, Cell start, Connectivity con
   const std::size_t n = grid.size();
   dist_.assign(n, -1);
   queue_.resize(n);
+  reached_ = 0;
   if (!grid.contains(start) || grid[start] != 0) return 0;
   const int w = grid.width(), h = grid.height();
   const auto* cells = grid.data().data();
@@ -42,6 +43,7 @@ std::size_t BfsFlood::flood(const BinaryGrid& grid, Cell start, Connectivity con
       if (e && sth && cells[cu - uw + 1] == 0) visit(cu - uw + 1, d);
     }
   }
+  reached_ = tail;
   return tail;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "voronav/planning/grid_planner.hpp"
@@ -17,10 +18,16 @@ class BfsFlood {
   std::size_t flood(const BinaryGrid& grid, Cell start, Connectivity connectivity);
   /// Steps from start to each cell after flood(); -1 for unreached cells.
   [[nodiscard]] std::int32_t steps(const BinaryGrid& grid, Cell c) const;
+  /// After flood(): the indices (grid.index) of the reached cells in the order they were
+  /// reached, so their step counts never decrease; the start first. Valid until the next flood.
+  [[nodiscard]] std::span<const std::int32_t> reached() const {
+    return std::span<const std::int32_t>(queue_).first(reached_);
+  }
 
  private:
   std::vector<std::int32_t> dist_;
   std::vector<std::int32_t> queue_;
+  std::size_t reached_ = 0;
 };
 
 }  // namespace voronav::planning
