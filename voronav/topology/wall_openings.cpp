@@ -124,24 +124,31 @@ class Boundary {
   int w_, h_;
 };
 
-// Ramer-Douglas-Peucker on the corner indices c[lo..hi] of a chain of points.
-void split(const std::vector<P>& pts, const std::vector<std::size_t>& c, std::size_t lo,
-           std::size_t hi, double tol, std::vector<std::size_t>* keep) {
-  if (hi <= lo + 1) return;
-  const P a = pts[c[lo]], b = pts[c[hi]];
-  const P ab = b - a;
-  const double len = std::sqrt(dot(ab, ab));
-  double worst = -1.0;
-  std::size_t at = lo;
-  for (std::size_t k = lo + 1; k < hi; ++k) {
-    const P ap = pts[c[k]] - a;
-    const double d = len > 0.0 ? std::abs(ab.x * ap.y - ab.y * ap.x) / len : std::sqrt(dot(ap, ap));
-    if (d > worst) worst = d, at = k;
+// Ramer-Douglas-Peucker on the corner indices c[lo..hi] of a chain of points: appends the split
+// indices to keep (unordered; an explicit stack, so long jagged chains cannot overflow the stack).
+void split(const std::vector<P>& pts, const std::vector<std::size_t>& c, std::size_t lo0,
+           std::size_t hi0, double tol, std::vector<std::size_t>* keep) {
+  std::vector<std::pair<std::size_t, std::size_t>> todo{{lo0, hi0}};
+  while (!todo.empty()) {
+    const auto [lo, hi] = todo.back();
+    todo.pop_back();
+    if (hi <= lo + 1) continue;
+    const P a = pts[c[lo]], b = pts[c[hi]];
+    const P ab = b - a;
+    const double len = std::sqrt(dot(ab, ab));
+    double worst = -1.0;
+    std::size_t at = lo;
+    for (std::size_t k = lo + 1; k < hi; ++k) {
+      const P ap = pts[c[k]] - a;
+      const double d =
+          len > 0.0 ? std::abs(ab.x * ap.y - ab.y * ap.x) / len : std::sqrt(dot(ap, ap));
+      if (d > worst) worst = d, at = k;
+    }
+    if (worst <= tol) continue;
+    keep->push_back(at);
+    todo.push_back({lo, at});
+    todo.push_back({at, hi});
   }
-  if (worst <= tol) return;
-  split(pts, c, lo, at, tol, keep);
-  keep->push_back(at);
-  split(pts, c, at, hi, tol, keep);
 }
 
 // Least-squares line through pts[i0..i1] (wrapping), oriented from the first to the last point.
@@ -224,6 +231,7 @@ std::vector<WallSegment> wall_segments(const BinaryGrid& blocked, double fit_tol
     keep.push_back(far);
     split(pts, c, far, c.size() - 1, fit_tolerance_cells, &keep);
     keep.push_back(c.size() - 1);
+    std::sort(keep.begin(), keep.end());
     for (std::size_t k = 0; k + 1 < keep.size(); ++k) {
       const WallSegment s = fit(pts, c[keep[k]], c[keep[k + 1]]);
       if (s.length() >= min_length_cells) out.push_back(s);
