@@ -35,6 +35,8 @@ struct TopoArgs {
   bool validate_sides = topology::TopologyOptions{}.validate_sides;
   double room_test_elongation = topology::TopologyOptions{}.room_test_elongation;
   double min_wall_area = topology::TopologyOptions{}.min_wall_area;
+  topology::WallOpeningOptions wall = topology::TopologyOptions{}.wall_openings;
+  bool wall_first = topology::TopologyOptions{}.wall_openings_first;
   bool json = false;
   std::filesystem::path mcap;
 };
@@ -63,6 +65,8 @@ void run(const TopoArgs& a) {
   opt.validate_sides = a.validate_sides;
   opt.room_test_elongation = a.room_test_elongation;
   opt.min_wall_area = a.min_wall_area;
+  opt.wall_openings = a.wall;
+  opt.wall_openings_first = a.wall_first;
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
   const topology::TopologicalMap m = topology::build_topological_map(blocked, opt);
@@ -94,7 +98,8 @@ void run(const TopoArgs& a) {
                    {"world", {w.x, w.y}},
                    {"clearance_m", cp.clearance_m},
                    {"basis", {{cp.basis[0].x, cp.basis[0].y}, {cp.basis[1].x, cp.basis[1].y}}},
-                   {"separates", cp.separates}});
+                   {"separates", cp.separates},
+                   {"source", cp.wall_gap ? "wall_gap" : "narrowing"}});
   }
   j["critical_points"] = cps;
   j["regions"] = m.regions.size();
@@ -234,6 +239,32 @@ void setup(CLI::App& app) {
                   "Obstacle pieces smaller than this [m^2] are furniture: no critical line "
                   "(door) ends on them (0 = off)")
       ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--wall-gap-max-width", args->wall.max_width,
+                  "Openings in wall lines: a gap up to this wide [m] between two collinear wall "
+                  "faces is closed by a critical line (0 = off)")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--wall-gap-min-width", args->wall.min_width,
+                  "Openings in wall lines: the narrowest gap [m]")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--wall-min-length", args->wall.min_wall_length,
+                  "Openings in wall lines: each wall face at least this long [m]")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--wall-max-offset", args->wall.max_offset,
+                  "Openings in wall lines: collinear when each face end is within this [m] of "
+                  "the other face's line")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--wall-max-thickness", args->wall.max_wall_thickness,
+                  "Openings in wall lines: two opposite gaps this close [m] are one wall's faces")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--wall-gap-first", args->wall_first,
+                  "Where a wall-line opening and a narrowing close the same opening, keep the "
+                  "wall line (true/false)")
       ->capture_default_str();
   cmd->add_option("--mcap", args->mcap,
                   "Write a ROS 2 bag (MCAP): /map, /voronoi, /topology (docs/ros.md)");

@@ -230,6 +230,17 @@ void bind_field(py::module_& m) {
   bind_enum<topology::DiagramMethod>(tp, "DiagramMethod",
                                      {{"edt", topology::DiagramMethod::kEdt},
                                       {"ca", topology::DiagramMethod::kCellularAutomaton}});
+  py::class_<topology::WallOpeningOptions>(tp, "WallOpeningOptions",
+                                           "Openings in wall lines; keywords = fields.")
+      .def(py::init(options_factory<topology::WallOpeningOptions>("WallOpeningOptions")))
+      .def_readwrite("min_width", &topology::WallOpeningOptions::min_width, "[m]")
+      .def_readwrite("max_width", &topology::WallOpeningOptions::max_width, "[m], 0 = off")
+      .def_readwrite("min_wall_length", &topology::WallOpeningOptions::min_wall_length, "[m]")
+      .def_readwrite("max_offset", &topology::WallOpeningOptions::max_offset, "[m]")
+      .def_readwrite("max_angle_deg", &topology::WallOpeningOptions::max_angle_deg, "[deg]")
+      .def_readwrite("fit_tolerance", &topology::WallOpeningOptions::fit_tolerance, "[m]")
+      .def_readwrite("max_wall_thickness", &topology::WallOpeningOptions::max_wall_thickness, "[m]")
+      .def_readwrite("wall_ends", &topology::WallOpeningOptions::wall_ends);
   py::class_<topology::TopologyOptions>(tp, "TopologyOptions",
                                         "Topological map options; keywords = fields.")
       .def(py::init(options_factory<topology::TopologyOptions>("TopologyOptions")))
@@ -251,7 +262,10 @@ void bind_field(py::module_& m) {
                      "room test of the critical lines")
       .def_readwrite("room_test_elongation", &topology::TopologyOptions::room_test_elongation,
                      "the room test joins only when one side is at least this elongated")
-      .def_readwrite("min_region_area", &topology::TopologyOptions::min_region_area, "[m^2]");
+      .def_readwrite("min_region_area", &topology::TopologyOptions::min_region_area, "[m^2]")
+      .def_readwrite("wall_openings", &topology::TopologyOptions::wall_openings,
+                     "openings in wall lines closed by critical lines")
+      .def_readwrite("wall_openings_first", &topology::TopologyOptions::wall_openings_first);
   py::class_<topology::CriticalPoint>(tp, "CriticalPoint")
       .def_property_readonly("cell",
                              [](const topology::CriticalPoint& c) { return cell_tuple(c.cell); })
@@ -266,6 +280,8 @@ void bind_field(py::module_& m) {
       .def_property_readonly(
           "midpoint", [](const topology::CriticalPoint& c) { return cell_tuple(c.midpoint); })
       .def_readonly("separates", &topology::CriticalPoint::separates)
+      .def_readonly("wall_gap", &topology::CriticalPoint::wall_gap,
+                    "from an opening in a wall line, not a narrowing")
       .def("__repr__", [](const topology::CriticalPoint& c) {
         return "CriticalPoint((" + std::to_string(c.cell.x) + ", " + std::to_string(c.cell.y) +
                "), clearance " + std::to_string(c.clearance_m) + " m)";

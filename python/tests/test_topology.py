@@ -50,6 +50,21 @@ def test_critical_line_options_equal_cli(data, cli):
     assert len(default.critical_points) != len(topo.critical_points)
 
 
+def test_wall_openings_equal_cli(data, cli):
+    # Openings in wall lines (on by default): NLB's open room fronts and wall stubs give wall-gap
+    # critical lines; the same from Python as from the CLI; none when turned off.
+    blocked = vn.binarize(vn.io.load_floorplan(str(data / "floorplans/NLB.png"), resolution=0.05,
+                                               free_from=250, occupied_below=250))
+    topo = vn.topology.build_topological_map(blocked)
+    out = cli("topo", "--map", str(data / "floorplans/NLB.png"))
+    assert len(topo.regions) == out["regions"]
+    walls = sum(cp.wall_gap for cp in topo.critical_points)
+    assert walls == sum(cp["source"] == "wall_gap" for cp in out["critical_points"]) and walls > 0
+    off = vn.topology.TopologyOptions(wall_openings=vn.topology.WallOpeningOptions(max_width=0.0))
+    assert off.wall_openings.max_width == 0.0
+    assert not any(cp.wall_gap for cp in vn.topology.build_topological_map(blocked, off).critical_points)
+
+
 def test_topo_plan_status_returned(data):
     blocked = vn.binarize(office(data))
     topo = vn.topology.build_topological_map(blocked)

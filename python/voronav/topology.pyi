@@ -9,6 +9,17 @@ class DiagramMethod(Enum):
     edt = ...
     ca = ...
 
+class WallOpeningOptions:
+    min_width: float  # [m]
+    max_width: float  # [m], 0 = off
+    min_wall_length: float  # [m]
+    max_offset: float  # [m]
+    max_angle_deg: float  # [deg]
+    fit_tolerance: float  # [m]
+    max_wall_thickness: float  # [m]
+    wall_ends: bool
+    def __init__(self, **kwargs: object) -> None: ...
+
 class TopologyOptions:
     method: DiagramMethod
     gvd: GvdOptions
@@ -21,7 +32,10 @@ class TopologyOptions:
     passage_rise_ratio: float
     min_wall_area: float  # [m^2]
     validate_sides: bool
+    room_test_elongation: float
     min_region_area: float  # [m^2]
+    wall_openings: WallOpeningOptions
+    wall_openings_first: bool
     def __init__(self, **kwargs: object) -> None: ...
 
 class CriticalPoint:
@@ -31,6 +45,7 @@ class CriticalPoint:
     line: List[Tuple[int, int]]
     midpoint: Tuple[int, int]
     separates: bool
+    wall_gap: bool
 
 class Region:
     id: int

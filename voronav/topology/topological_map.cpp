@@ -30,6 +30,7 @@ void check_options(const TopologyOptions& o) {
   nonneg("TopologyOptions.min_wall_area", o.min_wall_area);
   nonneg("TopologyOptions.passage_rise_ratio", o.passage_rise_ratio);
   nonneg("TopologyOptions.room_test_elongation", o.room_test_elongation);
+  check_wall_opening_options(o.wall_openings);
 }
 
 double sq(Cell a, Cell b) {
@@ -246,6 +247,39 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
            static_cast<double>(component_cells[static_cast<std::size_t>(l)]) < min_wall_cells;
   };
   BinaryGrid cut(geo, 0);
+  // Openings in wall lines (wall_openings.hpp) and narrowings can find the same opening; two
+  // lines within half a wall's thickness + 2 cells of each other would leave a sliver between
+  // them, so the later one is dropped. With wall_openings_first the wall lines come first (a
+  // narrowing next to a wall-line opening is dropped), else the narrowings.
+  const bool walls = o.wall_openings.max_width > 0.0;
+  const int reach = static_cast<int>(std::ceil(0.5 * o.wall_openings.max_wall_thickness / res)) + 2;
+  BinaryGrid wall_cut(geo, 0);
+  auto near_cut = [&](const std::vector<Cell>& line, const BinaryGrid& grid) {
+    for (const Cell c : line)
+      for (int dy = -reach; dy <= reach; ++dy)
+        for (int dx = -reach; dx <= reach; ++dx) {
+          const Cell q = c + Cell{dx, dy};
+          if (geo.contains(q) && grid[q] != 0) return true;
+        }
+    return false;
+  };
+  std::vector<WallOpening> openings;
+  if (walls) openings = find_wall_openings(g.blocked, o.wall_openings);
+  auto add_openings = [&] {
+    for (WallOpening& op : openings) {
+      if (near_cut(op.line, cut)) continue;
+      CriticalPoint cp;
+      cp.basis = op.jambs;
+      cp.clearance_m = 0.5 * op.width_cells * res;
+      cp.line = std::move(op.line);
+      cp.cell = cp.midpoint = cp.line[cp.line.size() / 2];
+      cp.wall_gap = true;
+      for (const Cell c : cp.line)
+        cut[c] = wall_cut[c] = 1;
+      out.critical_points.push_back(std::move(cp));
+    }
+  };
+  if (walls && o.wall_openings_first) add_openings();
   for (const Cell p : minima) {
     const double clear = static_cast<double>(g.clearance[p]);
     if (!std::isfinite(clear)) continue;
@@ -273,7 +307,6 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     for_each_line_cell(s1, s2, [&](Cell c) {
       if (!geo.contains(c) || g.blocked[c]) return;
       cp.line.push_back(c);
-      cut[c] = 1;
       const double d = (c.x - mx) * (c.x - mx) + (c.y - my) * (c.y - my);
       if (d < best) {
         best = d;
@@ -281,8 +314,12 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
       }
     });
     if (cp.line.empty()) continue;
+    if (walls && o.wall_openings_first && near_cut(cp.line, wall_cut)) continue;
+    for (const Cell c : cp.line)
+      cut[c] = 1;
     out.critical_points.push_back(std::move(cp));
   }
+  if (walls && !o.wall_openings_first) add_openings();
 
   // 2. Regions: 4-connected components of the free cells minus the critical lines.
   GridMap<std::int32_t> comp(geo, -1);

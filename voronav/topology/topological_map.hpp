@@ -16,6 +16,9 @@
 //    critical points on obstacle pieces under min_wall_area (furniture) are dropped; and the room
 //    test (validate_sides) drops a line when neither region it separates holds a cell whose
 //    clearance reaches that rise (two pieces of one passage).
+//    Openings in wall lines (issue #15, on by default; wall_openings.hpp): a door-width gap
+//    between two collinear wall faces, or between a wall stub's end and the wall ahead of it,
+//    is a critical line too (CriticalPoint::wall_gap), unless a narrowing's line is next to it.
 //  - critical line: the Bresenham segment between the two basis points.
 //  - regions: the free cells cut by the critical lines, 4-connected components; the cells of the
 //    lines join the smallest adjacent region. Merge rule: a region smaller than min_region_area
@@ -37,6 +40,7 @@
 
 #include "voronav/core/grid_map.hpp"
 #include "voronav/core/occupancy.hpp"
+#include "voronav/topology/wall_openings.hpp"
 #include "voronav/voronoi/gvd.hpp"
 #include "voronav/voronoi/labeled_voronoi.hpp"
 
@@ -81,6 +85,13 @@ struct TopologyOptions {
   double room_test_elongation = 2.5;
   /// Regions smaller than this [m^2] are merged into a neighbour (see the file comment).
   double min_region_area = 1.0;
+  /// Openings in wall lines (wall_openings.hpp): a gap of door width between two collinear wall
+  /// faces is closed by a critical line too, unless a critical line already crosses it; off
+  /// while wall_openings.max_width is 0.
+  WallOpeningOptions wall_openings{};
+  /// Where a wall-line opening and a narrowing's critical line close the same opening, keep the
+  /// wall line (true) or the narrowing's line (false).
+  bool wall_openings_first = false;
 };
 
 struct CriticalPoint {
@@ -90,6 +101,7 @@ struct CriticalPoint {
   std::vector<Cell> line;     ///< free cells of the critical line (basis to basis)
   Cell midpoint;              ///< the free line cell nearest the middle of the two basis points
   bool separates = true;      ///< whether its two sides are different regions
+  bool wall_gap = false;      ///< from an opening in a wall line, not a narrowing of the diagram
 };
 
 struct Region {
