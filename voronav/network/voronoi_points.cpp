@@ -420,8 +420,18 @@ PointSearch search_grid(std::span<const VoronoiPoint> points, std::span<const do
       seen[j] = i;
       ++s.candidates;
       if (done[j]) return;
-      if (!continues_inline(pi, points[j], robot_radius_m) && !(may_edge && extra.edge(i, j)))
-        return;
+      if (!continues_inline(pi, points[j], robot_radius_m)) {
+        if (!may_edge) return;
+        if (extra.on_asked) {
+          extra.on_asked(i, j);
+          // The answer matters only where the relaxation below would do something.
+          const double nc = c + distance(pi.position, points[j].position);
+          const bool matters = nc < s.cost[j] || (tie_parent && nc == s.cost[j] &&
+                                                  s.parent[j] < 0 && (*tie_parent)[j] < 0);
+          if (!matters) return;
+        }
+        if (!extra.edge(i, j)) return;
+      }
       const double nc = c + distance(pi.position, points[j].position);
       if (nc < s.cost[j]) {
         s.cost[j] = nc;
@@ -515,8 +525,16 @@ PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
   bool finite = true;
   for (const auto& p : points)
     finite = finite && std::isfinite(p.position.x) && std::isfinite(p.position.y);
-  if (!finite || (has_edge && !(extra.max_distance_m < std::numeric_limits<double>::infinity())))
+  if (!finite || (has_edge && !(extra.max_distance_m < std::numeric_limits<double>::infinity()))) {
+    if (has_edge && extra.on_asked) {
+      const ExtraEdge counted = [&](std::size_t i, std::size_t j) {
+        extra.on_asked(i, j);
+        return extra.edge(i, j);
+      };
+      return search_points(points, start_cost, robot_radius_m, counted);
+    }
     return search_points(points, start_cost, robot_radius_m, extra.edge);  // nothing to bound by
+  }
   for (const auto& [i, j] : extra.unbounded_pairs)
     if (i >= n || j >= n) throw Error("search_points", 0, "an unbounded pair names no point");
   bool any_copy = false;
@@ -553,6 +571,10 @@ PointSearch search_points_bucketed(std::span<const VoronoiPoint> points,
   if (has_edge) {
     // Points in the edge range are never merged, so the range stays contiguous.
     cextra.edge = [&](std::size_t a, std::size_t b) { return extra.edge(full_of[a], full_of[b]); };
+    if (extra.on_asked)
+      cextra.on_asked = [&](std::size_t a, std::size_t b) {
+        extra.on_asked(full_of[a], full_of[b]);
+      };
     cextra.range_begin = static_cast<std::size_t>(
         std::lower_bound(full_of.begin(), full_of.end(), extra.range_begin) - full_of.begin());
     cextra.range_end = static_cast<std::size_t>(

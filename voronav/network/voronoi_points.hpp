@@ -74,6 +74,11 @@ using ExtraEdge = std::function<bool(std::size_t, std::size_t)>;
 /// Extra edges a caller can bound, so that the search need not compare every pair of points.
 struct BoundedExtraEdges {
   ExtraEdge edge;  ///< may be empty
+  /// When set, called for every pair the search asks edge() about (a caller counts the work of
+  /// its checks here); edge() itself is then asked only when its answer can change the result
+  /// (the move would lower the other point's cost, or tie it where a tie counts), so a costly
+  /// check is skipped where it cannot matter. Same cost, parent and work as without it.
+  std::function<void(std::size_t, std::size_t)> on_asked;
   /// edge(i, j) is false whenever the points are more than this far apart [m] (the caller
   /// guarantees it); +inf = no bound (the search then compares every pair).
   double max_distance_m = std::numeric_limits<double>::infinity();

@@ -116,7 +116,7 @@ TEST(VoronoiPoints, ClearanceAtMatchesDistanceToUnknown) {
 // pair the all-pairs search asks about that can be true.
 TEST(VoronoiPoints, BucketedSearchEqualsAllPairsSearch) {
   const double r = 0.2;
-  std::size_t reached_total = 0, fewer_candidates = 0;
+  std::size_t reached_total = 0, fewer_candidates = 0, heard_total = 0, checked_total = 0;
   for (std::uint64_t seed = 1; seed <= 150; ++seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -172,6 +172,30 @@ TEST(VoronoiPoints, BucketedSearchEqualsAllPairsSearch) {
     ASSERT_EQ(plain.work, bucketed.work) << "seed " << seed;
     ASSERT_EQ(asked_plain, asked_bucketed) << "seed " << seed;
     ASSERT_LE(bucketed.candidates, plain.candidates) << "seed " << seed;
+    if (with_edge) {
+      // With on_asked the caller hears every pair it was asked about (the same count), and the
+      // search asks edge() only where the answer can lower a cost: same result, fewer checks.
+      std::size_t heard = 0, checked = 0;
+      BoundedExtraEdges lazy = extra;
+      std::size_t* sink = &heard;
+      lazy.on_asked = [&](std::size_t i, std::size_t j) {
+        asked = sink;
+        (void)edge(i, j);  // counts the pair if edge() would count it
+      };
+      lazy.edge = [&](std::size_t i, std::size_t j) {
+        ++checked;
+        std::size_t ignore = 0;
+        asked = &ignore;
+        return edge(i, j);
+      };
+      const auto skipped = search_points_bucketed(pts, start, r, lazy);
+      ASSERT_EQ(plain.cost, skipped.cost) << "seed " << seed;
+      ASSERT_EQ(plain.parent, skipped.parent) << "seed " << seed;
+      ASSERT_EQ(plain.work, skipped.work) << "seed " << seed;
+      ASSERT_EQ(heard, asked_plain) << "seed " << seed;
+      heard_total += heard;
+      checked_total += checked;
+    }
     fewer_candidates += bucketed.candidates < plain.candidates;
     for (double c : plain.cost)
       reached_total += std::isfinite(c);
@@ -179,6 +203,8 @@ TEST(VoronoiPoints, BucketedSearchEqualsAllPairsSearch) {
   // The sets are not trivial: many points are reached through edges, and the grid prunes.
   EXPECT_GT(reached_total, 2000u);
   EXPECT_GT(fewer_candidates, 50u);
+  // on_asked saves checks (edge() is asked about fewer pairs than the caller hears of).
+  EXPECT_LT(checked_total * 2, heard_total);
 }
 
 // Merged Searches carry the same point many times (re-forwards): the search takes one point per
@@ -246,6 +272,12 @@ TEST(VoronoiPoints, BucketedSearchMergesCopiesWithTheAllPairsResult) {
     ASSERT_EQ(plain.cost, merged.cost) << "seed " << seed;
     ASSERT_EQ(plain.parent, merged.parent) << "seed " << seed;
     ASSERT_EQ(plain.work, merged.work) << "seed " << seed;
+    BoundedExtraEdges lazy = extra;  // edge() asked only where it matters: the same result
+    lazy.on_asked = [](std::size_t, std::size_t) {};
+    const auto skipped = search_points_bucketed(p2, s2, r, lazy);
+    ASSERT_EQ(plain.cost, skipped.cost) << "seed " << seed;
+    ASSERT_EQ(plain.parent, skipped.parent) << "seed " << seed;
+    ASSERT_EQ(plain.work, skipped.work) << "seed " << seed;
     for (std::size_t i = 0; i < p2.size(); ++i) {
       if (plain.parent[i] < 0) continue;
       const auto& par = p2[static_cast<std::size_t>(plain.parent[i])];

@@ -131,18 +131,33 @@ bool RobotAgent::try_continue() {
   // The source's start point (its position) is in its own map too (source_straight_start).
   const std::size_t own_begin = is_source() && opt().source_straight_start ? 0 : r.s_na;
   std::size_t los_cells = 0;
-  auto own_edge = [&](std::size_t i, std::size_t j) {
-    if (i < own_begin || j < own_begin || i >= own_end || j >= own_end) return false;
-    if (i < r.s_na && j < r.s_na) return false;
-    if (i >= trail_begin && j >= trail_begin && (i + 1 == j || j + 1 == i)) return true;
+  // Which pairs own_edge checks in the map: 0 = none (false), 1 = consecutive trail points
+  // (true), 2 = a straight move to check.
+  auto own_kind = [&](std::size_t i, std::size_t j) {
+    if (i < own_begin || j < own_begin || i >= own_end || j >= own_end) return 0;
+    if (i < r.s_na && j < r.s_na) return 0;
+    if (i >= trail_begin && j >= trail_begin && (i + 1 == j || j + 1 == i)) return 1;
     const Vec2 a = r.s_comb[i].position, b = r.s_comb[j].position;
-    if ((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) > 36.0) return false;  // > 6 m
-    los_cells += static_cast<std::size_t>(distance(a, b) / scen().world.resolution()) + 1;
+    if ((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) > 36.0) return 0;  // > 6 m
+    return 2;
+  };
+  auto own_edge = [&](std::size_t i, std::size_t j) {
+    const int kind = own_kind(i, j);
+    if (kind != 2) return kind == 1;
+    const Vec2 a = r.s_comb[i].position, b = r.s_comb[j].position;
     return r.own_moves.get(r.map.version(), a, b, [&] { return segment_known_free(a, b); });
+  };
+  // The work of a check counts every move the search asks about (eq. 8-9), also those whose
+  // answer cannot change a cost, which the search then does not check (on_asked).
+  auto own_asked = [&](std::size_t i, std::size_t j) {
+    if (own_kind(i, j) != 2) return;
+    los_cells += static_cast<std::size_t>(distance(r.s_comb[i].position, r.s_comb[j].position) /
+                                          scen().world.resolution()) +
+                 1;
   };
   // The same search on a grid of the points (identical result and work count): own_edge is
   // false outside [own_begin, own_end) and beyond 6 m, except between consecutive trail points.
-  BoundedExtraEdges extra{own_edge, 6.0, own_begin, own_end, {}};
+  BoundedExtraEdges extra{own_edge, own_asked, 6.0, own_begin, own_end, {}};
   for (std::size_t i = trail_begin; i + 1 < own_end; ++i)
     extra.unbounded_pairs.emplace_back(i, i + 1);
   r.s_search =

@@ -99,6 +99,7 @@ RobotAgent::RobotAgent(const AgentContext& context, RobotId id, Vec2 position, T
   r_.id = id;
   r_.pos = position;
   const auto& g = scen().world.geometry();
+  sweep_ = DiscSweep(opt().robot_radius_m / g.resolution - 0.01);
   r_.map = LocalMap(g);
   if (opt().method == Method::kCentralized && is_source())
     r_.map.ensure(Cell{0, 0}, Cell{g.width - 1, g.height - 1});
@@ -427,31 +428,18 @@ bool RobotAgent::segment_known_free(Vec2 a, Vec2 b) const {
   const auto& g = map.world();
   const auto ca = g.world_to_cell(a), cb = g.world_to_cell(b);
   if (!ca || !cb) return false;
-  const double rad = opt().robot_radius_m / g.resolution - 0.01;
-  // The union of the robot's discs along the line; consecutive discs overlap almost entirely, so
-  // each cell is looked up once (a mark per cell of the segment's bounding box). Same answer as
-  // checking every disc cell (the hot spot of own-edge checks on 100 robots, networked.md).
-  const int pad = static_cast<int>(std::floor(std::max(rad, 0.0))) + 1;
-  const int x0 = std::min(ca->x, cb->x) - pad, y0 = std::min(ca->y, cb->y) - pad;
-  const int bw = std::abs(ca->x - cb->x) + 2 * pad + 1, bh = std::abs(ca->y - cb->y) + 2 * pad + 1;
-  const bool marks = static_cast<long>(bw) * bh <= 65536;  // long segments: no marks
-  std::vector<std::uint8_t> seen(
-      marks ? static_cast<std::size_t>(bw) * static_cast<std::size_t>(bh) : 0, 0);
-  bool ok = true;
-  for_each_line_cell(*ca, *cb, [&](Cell c) {
-    for_each_disc_cell(c, rad, [&](Cell d) {
-      if (marks) {
-        auto& m = seen[static_cast<std::size_t>(d.y - y0) * static_cast<std::size_t>(bw) +
-                       static_cast<std::size_t>(d.x - x0)];
-        if (m) return true;
-        m = 1;
-      }
-      if (map.at(d) != kFree) ok = false;
-      return ok;
-    });
-    return ok;
-  });
-  return ok;
+  // The union of the robot's discs (radius r / resolution - 0.01 cells, sweep_) along the line.
+  // A disc cell outside the map's window is unknown, so the move is then not known free; the
+  // union reaches exactly sweep_.reach() cells beyond the line's bounding box (in x and in y).
+  if (sweep_.disc().empty()) return true;
+  const auto& grid = map.grid();
+  const Cell off = map.offset();
+  const Cell k = sweep_.reach();
+  if (std::min(ca->x, cb->x) - k.x < off.x || std::min(ca->y, cb->y) - k.y < off.y ||
+      std::max(ca->x, cb->x) + k.x >= off.x + grid.width() ||
+      std::max(ca->y, cb->y) + k.y >= off.y + grid.height())
+    return false;
+  return sweep_.visit(*ca - off, *cb - off, [&](Cell d) { return grid[d] == kFree; });
 }
 
 // ---- walking on the robot's own (optimistic) map ----------------------------------------------

@@ -28,6 +28,7 @@
 #include "voronav/network/sim_radio.hpp"
 #include "voronav/network/transport.hpp"
 #include "voronav/network/voronoi_points.hpp"
+#include "voronav/sim/disc_sweep.hpp"
 #include "voronav/sim/netsim.hpp"
 #include "voronav/sim/segment_cache.hpp"
 #include "voronav/sim/world.hpp"
@@ -268,6 +269,7 @@ class RobotAgent {
 
   AgentContext ctx_;
   network::Transport& transport_;
+  DiscSweep sweep_{-1.0};  // the robot's disc (radius r, less 0.01 cell) along a straight move
   State r_;
   AgentReport report_;
   std::vector<Outgoing> outbox_;

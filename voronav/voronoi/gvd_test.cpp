@@ -9,6 +9,8 @@
 
 #include "voronav/core/error.hpp"
 #include "voronav/field/distance_transform.hpp"
+#include "voronav/voronoi/internal/local_skeleton.hpp"
+#include "voronav/voronoi/memory.hpp"
 #include "voronav/voronoi/test_maps.hpp"
 #include "voronav/voronoi/voronoi_graph.hpp"
 
@@ -567,6 +569,36 @@ TEST(DynamicGvd, BuildsOnReusedMemoryStartFromZero) {
     expect_equal(dyn.snapshot(), build_gvd(g), "round " + std::to_string(round));
     if (::testing::Test::HasFatalFailure()) return;
   }
+}
+
+TEST(KeptBlocks, TheLimitBoundsWhatIsKeptAndLoweringItReleasesTheOldest) {
+  if (!kept_blocks_available()) GTEST_SKIP() << "sanitizer build: large arrays come from calloc";
+  constexpr std::size_t MiB = std::size_t{1} << 20;
+  const std::size_t old_limit = kept_block_limit();
+  set_kept_block_limit(0);  // empties the pool
+  ASSERT_EQ(kept_block_bytes(), 0u);
+  set_kept_block_limit(3 * MiB);
+  auto* a = static_cast<unsigned char*>(internal::zeroed_alloc(MiB));
+  void* b = internal::zeroed_alloc(2 * MiB);
+  a[12345] = 7;
+  internal::zeroed_free(b, 2 * MiB);
+  internal::zeroed_free(a, MiB);
+  EXPECT_EQ(kept_block_bytes(), 3 * MiB);
+  // The 1 MiB block comes back, cleared.
+  a = static_cast<unsigned char*>(internal::zeroed_alloc(MiB));
+  EXPECT_EQ(kept_block_bytes(), 2 * MiB);
+  EXPECT_EQ(a[12345], 0);
+  void* c = internal::zeroed_alloc(MiB);
+  internal::zeroed_free(a, MiB);  // 3 MiB kept: 2 + 1
+  internal::zeroed_free(c, MiB);  // the oldest (2 MiB) makes room
+  EXPECT_EQ(kept_block_bytes(), 2 * MiB);
+  void* big = internal::zeroed_alloc(4 * MiB);
+  internal::zeroed_free(big, 4 * MiB);  // over the limit: not kept
+  EXPECT_EQ(kept_block_bytes(), 2 * MiB);
+  set_kept_block_limit(MiB);  // lowering releases the oldest until it fits
+  EXPECT_EQ(kept_block_bytes(), MiB);
+  set_kept_block_limit(old_limit);
+  EXPECT_EQ(kept_block_limit(), old_limit);
 }
 
 }  // namespace

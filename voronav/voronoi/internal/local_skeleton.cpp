@@ -1,5 +1,7 @@
 #include "voronav/voronoi/internal/local_skeleton.hpp"
 
+#include "voronav/voronoi/memory.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -28,8 +30,7 @@ constexpr bool kCallocOnly = true;
 #else
 constexpr bool kCallocOnly = false;
 #endif
-constexpr std::size_t kMapBytes = std::size_t{1} << 16;     // larger blocks are mapped
-constexpr std::size_t kKeepBytes = std::size_t{128} << 20;  // at most this much is kept
+constexpr std::size_t kMapBytes = std::size_t{1} << 16;  // larger blocks are mapped
 
 // Freed mapped blocks kept for reuse, oldest first (a fresh mapping costs a page fault per page
 // touched, more than clearing a block that is already mapped): rebuilding a diagram of the same
@@ -39,6 +40,7 @@ struct BlockCache {
   std::mutex mutex;
   std::vector<std::pair<void*, std::size_t>> blocks;
   std::size_t bytes = 0;
+  std::size_t limit = kDefaultKeptBlockLimit;  // at most this much is kept
 };
 BlockCache& block_cache() {
   static auto* cache = new BlockCache;
@@ -70,33 +72,85 @@ void* zeroed_alloc(std::size_t n) {
   return p;
 }
 
+namespace {
+
+// Takes the oldest blocks out of the cache until `incoming` more bytes fit under its limit; the
+// caller unmaps them outside the lock. Called with the lock held.
+std::vector<std::pair<void*, std::size_t>> evict_for(BlockCache& c, std::size_t incoming) {
+  std::vector<std::pair<void*, std::size_t>> evicted;
+  std::size_t k = 0;
+  while (k < c.blocks.size() && c.bytes + incoming > c.limit) {
+    c.bytes -= c.blocks[k].second;
+    evicted.push_back(c.blocks[k++]);
+  }
+  c.blocks.erase(c.blocks.begin(), c.blocks.begin() + static_cast<std::ptrdiff_t>(k));
+  return evicted;
+}
+
+void unmap_all(const std::vector<std::pair<void*, std::size_t>>& blocks) {
+  for (const auto& [q, m] : blocks)
+    munmap(q, m);
+}
+
+}  // namespace
+
 void zeroed_free(void* p, std::size_t n) {
   if (!p) return;
   if (kCallocOnly || n < kMapBytes) {
     std::free(p);
     return;
   }
-  if (n > kKeepBytes) {
-    munmap(p, n);
-    return;
-  }
   // The oldest blocks make room (they are of a diagram that is gone).
   std::vector<std::pair<void*, std::size_t>> evicted;
+  bool keep = false;
   {
     BlockCache& c = block_cache();
     const std::lock_guard<std::mutex> lock(c.mutex);
-    std::size_t k = 0;
-    while (c.bytes + n > kKeepBytes) {
-      c.bytes -= c.blocks[k].second;
-      evicted.push_back(c.blocks[k++]);
+    if (n <= c.limit) {
+      evicted = evict_for(c, n);
+      c.blocks.emplace_back(p, n);
+      c.bytes += n;
+      keep = true;
     }
-    c.blocks.erase(c.blocks.begin(), c.blocks.begin() + static_cast<std::ptrdiff_t>(k));
-    c.blocks.emplace_back(p, n);
-    c.bytes += n;
   }
-  for (const auto& [q, m] : evicted)
-    munmap(q, m);
+  if (!keep) munmap(p, n);
+  unmap_all(evicted);
 }
+
+}  // namespace voronav::voronoi::internal
+
+namespace voronav::voronoi {
+
+void set_kept_block_limit(std::size_t bytes) {
+  std::vector<std::pair<void*, std::size_t>> evicted;
+  {
+    internal::BlockCache& c = internal::block_cache();
+    const std::lock_guard<std::mutex> lock(c.mutex);
+    c.limit = bytes;
+    evicted = internal::evict_for(c, 0);
+  }
+  internal::unmap_all(evicted);
+}
+
+std::size_t kept_block_limit() {
+  internal::BlockCache& c = internal::block_cache();
+  const std::lock_guard<std::mutex> lock(c.mutex);
+  return c.limit;
+}
+
+bool kept_blocks_available() {
+  return !internal::kCallocOnly;
+}
+
+std::size_t kept_block_bytes() {
+  internal::BlockCache& c = internal::block_cache();
+  const std::lock_guard<std::mutex> lock(c.mutex);
+  return c.bytes;
+}
+
+}  // namespace voronav::voronoi
+
+namespace voronav::voronoi::internal {
 
 namespace {
 
