@@ -965,19 +965,17 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           if (t < a.back_off_until) cmd = {-0.1, 0.0};
           a.since_progress += o.dt;
           if (a.blocked_time > 3.0 || a.since_progress > 30.0) {
-            // Deadlock or no progress: search reactively for a while, then drop the goal. Only
-            // a goal without progress for 30 s is banned for this robot; a block (a robot or a
-            // corner in the way) is transient, and banning its goal for good left the last
-            // frontiers banned for every robot once the block clock measured real blocks
-            // (depot, 4 robots, frontier, seed 8: 96.3 % instead of 99.5 %; issue 14).
-            const bool no_progress = a.since_progress > 30.0;
+            // Deadlock or no progress: search reactively for a while, then drop the goal (banned
+            // for this robot). Banning only goals without progress for 30 s, not blocked ones,
+            // was tried (issue 14, fifth pass): depot seed 8 (frontier) then reached 99.5 %
+            // instead of 96.3 %, but willow seed 2 (16 robots, frontier) stalled 4 robots.
             a.reactive_until = t + 5.0;
             a.blocked_time = 0.0;
             a.since_progress = 0.0;
             if (a.unsticking) {
               end_unstick(a, t);
             } else if (!a.on_tree) {
-              if (a.goal && no_progress) a.blacklist.push_back(*a.goal);
+              if (a.goal) a.blacklist.push_back(*a.goal);
               a.goal.reset();
               a.route.clear();
               a.mode = AgentMode::kReactive;
