@@ -82,16 +82,17 @@ void BM_Ga(benchmark::State& state) {
 BENCHMARK(BM_Ga)->Arg(30)->Arg(100)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // The 3-opt neighbourhood (issue #16): the paper's random moves (order 0) against critical-first
-// (order 1) on the section 5.1 random network of n robots and 2n points, network seed s;
-// counters: the makespan reached and the orders evaluated.
+// (order 1) and critical-delayed (order 2) on the section 5.1 random network of n robots and 2n
+// points, network seed s; counters: the makespan reached and the orders evaluated.
 void BM_GaOrder(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const co::MdNetwork net =
       co::random_network(n, 2 * n, static_cast<std::uint64_t>(state.range(1)));
   co::SearchOptions so;
   so.edf_reduction = false;
-  so.ga.three_opt_order =
-      state.range(2) == 0 ? co::ThreeOptOrder::kPaper : co::ThreeOptOrder::kCriticalFirst;
+  const co::ThreeOptOrder orders[] = {co::ThreeOptOrder::kPaper, co::ThreeOptOrder::kCriticalFirst,
+                                      co::ThreeOptOrder::kCriticalDelayed};
+  so.ga.three_opt_order = orders[static_cast<std::size_t>(state.range(2))];
   co::SearchResult r;
   for (auto _ : state) {
     r = co::search_priority(net, so);
@@ -101,7 +102,7 @@ void BM_GaOrder(benchmark::State& state) {
   state.counters["evaluations"] = static_cast<double>(r.evaluations);
 }
 BENCHMARK(BM_GaOrder)
-    ->ArgsProduct({{30, 100}, {1, 2, 3, 4, 5, 6, 7, 8}, {0, 1}})
+    ->ArgsProduct({{30, 100}, {1, 2, 3, 4, 5, 6, 7, 8}, {0, 1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 

@@ -9,17 +9,14 @@
 #
 # Usage: bench/ga_speed.sh OLD_VORONAV NEW_VORONAV [K:SEED ...]   (default 50:1 100:1)
 #        env ROUNDS (default 2), GA_ARGS (extra coordinate options, e.g. "--ga-three-opt 400")
-set -euo pipefail
-ROOT=$(cd "$(dirname "$0")/.." && pwd)
+# shellcheck source=bench/ga_common.sh disable=SC1091
+source "$(dirname "$0")/ga_common.sh"
 OLD=$1
 NEW=$2
 shift 2
 CASES=("$@")
 [ ${#CASES[@]} -eq 0 ] && CASES=(50:1 100:1)
 ROUNDS=${ROUNDS:-2}
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-PY=/usr/bin/python3
 echo "| K | seed | old CPU [s] | new CPU [s] | old / new | makespan [s] | evaluations | identical |"
 echo "|---|---|---|---|---|---|---|---|"
 for c in "${CASES[@]}"; do
@@ -30,11 +27,7 @@ for c in "${CASES[@]}"; do
       bin=$OLD
       [ "$which" = new ] && bin=$NEW
       # shellcheck disable=SC2086
-      /usr/bin/time -f "%U %S" -o "$TMP/t_${which}_$r" "$bin" coordinate \
-        --map "$ROOT/data/mapf/random-32-32-20.map" \
-        --scen "$ROOT/data/mapf/random-32-32-20-random-1.scen" --agents "$k" --seed "$seed" \
-        --at-start appear --at-goal leave --search ga --quiet --json ${GA_ARGS:-} \
-        >"$TMP/$which.json"
+      ga_run "$bin" "$k" "$seed" "$TMP/$which.json" "$TMP/t_${which}_$r" ${GA_ARGS:-}
     done
   done
   $PY - "$TMP" "$ROUNDS" "$k" "$seed" <<'PYEOF'
@@ -43,7 +36,7 @@ tmp, rounds, k, seed = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4]
 def cpu(which):
     best = None
     for r in range(1, rounds + 1):
-        u, s = open(f"{tmp}/t_{which}_{r}").read().split()[-2:]
+        u, s = open(f"{tmp}/t_{which}_{r}").read().split()[-3:-1]
         t = float(u) + float(s)
         best = t if best is None else min(best, t)
     return best

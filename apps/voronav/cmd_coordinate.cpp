@@ -49,6 +49,8 @@ struct CoordArgs {
   int ga_three_opt_patience = 0;
   int ga_threads = 0;
   int ga_population = 0;
+  int ga_stall = 0;
+  int ga_delayed_gate = 0;
   double node_spacing = -1.0;
   bool no_reduction = false;
   bool json = false;
@@ -359,6 +361,8 @@ void run(const CoordArgs& a) {
   opt.search.ga.three_opt_patience = a.ga_three_opt_patience;
   opt.search.ga.threads = a.ga_threads;
   opt.search.ga.population = a.ga_population;
+  opt.search.ga.stall_generations = a.ga_stall;
+  opt.search.ga.delayed_gate = a.ga_delayed_gate;
   opt.search.edf_reduction = !a.no_reduction;
   const co::CoordinationResult r = co::coordinate(agents, opt);
 
@@ -400,11 +404,14 @@ void run(const CoordArgs& a) {
       {"missed_conflicts", missed},
       {"fallback_paths", planned.fallback_paths},
       {"ga_rounds", r.search.rounds},
+      {"ga_generations", r.search.generations},
+      {"ga_best_per_round", r.search.best_per_round},
       {"evaluations", r.search.evaluations},
       {"three_opt_order", co::to_string(opt.search.ga.three_opt_order)},
       {"three_opt_improvements", r.search.three_opt_improvements},
       {"three_opt_local_optima", r.search.three_opt_local_optima},
       {"three_opt_exact_cuts", r.search.three_opt_exact_cuts},
+      {"three_opt_delayed_improvements", r.search.three_opt_delayed_improvements},
       {"at_start", co::to_string(opt.map.at_start)},
       {"at_goal", co::to_string(opt.map.at_goal)},
       {"agents", js_agents},
@@ -507,7 +514,9 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--ga-three-opt-order", a->ga_three_opt_order,
                   "GA: 3-opt moves: paper (uniform random, the paper's) | critical-first (moves "
-                  "of the last robot and the robots delaying it; stops at a local optimum)")
+                  "of the last robot and the robots delaying it; stops at a local optimum) | "
+                  "critical-delayed (critical-first, then sweeps over every delayed robot's "
+                  "blockers)")
       ->capture_default_str();
   cmd->add_option("--ga-three-opt-depth", a->ga_three_opt_depth,
                   "GA, critical-first: levels of robots delaying the critical robot whose moves "
@@ -523,6 +532,16 @@ void setup(CLI::App& app) {
                   "GA: 0 = one random stream (earlier results); N >= 1 = per-child streams, the "
                   "children of a generation on N threads (same result for every N >= 1)")
       ->check(CLI::Range(0, 64))
+      ->capture_default_str();
+  cmd->add_option("--ga-stall", a->ga_stall,
+                  "GA: 0 = the paper's stop rule (two rounds of 20 crossovers with the same best "
+                  "makespan); G > 0 = stop after G generations without a better makespan")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--ga-delayed-gate", a->ga_delayed_gate,
+                  "GA, critical-delayed: 0 = sweeps on every child; K > 0 = only on children "
+                  "that critical-first makes no worse than the K-th best of the population")
+      ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--ga-population", a->ga_population, "GA: population size (0 = N, the paper's)")
       ->check(non_negative())

@@ -6,8 +6,14 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <utility>
 
 #include "voronav/coordination/internal/critical_moves.hpp"
+#include "voronav/coordination/internal/strided_threads.hpp"
 #include "voronav/coordination/paper_networks.hpp"
 #include "voronav/coordination/priority_search.hpp"
 #include "voronav/core/error.hpp"
@@ -177,7 +183,8 @@ TEST(CriticalMoves, GaCriticalFirstIsDeterministicAndNeverWorseThanTheSeed) {
 // Per-child RNG streams: the same result for 1, 2 and 3 threads (whatever the threads' timing),
 // for both 3-opt neighbourhoods.
 TEST(CriticalMoves, GaResultDoesNotDependOnTheThreadCount) {
-  for (const auto order : {ThreeOptOrder::kPaper, ThreeOptOrder::kCriticalFirst}) {
+  for (const auto order :
+       {ThreeOptOrder::kPaper, ThreeOptOrder::kCriticalFirst, ThreeOptOrder::kCriticalDelayed}) {
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       const MdNetwork net = random_network(20, 60, seed);
       SearchOptions so;
@@ -197,6 +204,151 @@ TEST(CriticalMoves, GaResultDoesNotDependOnTheThreadCount) {
         EXPECT_EQ(r.resolution.delays, one.resolution.delays);
       }
       EXPECT_GE(one.generations, 2);
+    }
+  }
+}
+
+// The delayed pairs: every delayed robot of the searched prefix with each of its blockers, once,
+// the latest completion first, every blocker above its robot.
+TEST(CriticalMoves, DelayedPairsListEveryBlockerOfEveryDelayedRobot) {
+  int pairs_seen = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const MdNetwork net = random_network(20, 80, seed);
+    std::mt19937_64 rng(seed + 100);
+    const auto order = random_order(net.size(), rng);
+    const auto rank = ranks_of(order);
+    const Resolution res = resolve(net, order);
+    ASSERT_EQ(res.status, ResolveStatus::kOk);
+    const int n = 15;  // the last 5 robots are a fixed suffix
+    const auto pairs = internal::delayed_pairs(net, n, rank, res);
+    std::set<std::pair<int, int>> unique;
+    std::size_t expected = 0;
+    for (int x = 0; x < net.size(); ++x) {
+      if (rank[static_cast<std::size_t>(x)] < n && res.delays[static_cast<std::size_t>(x)] > 1e-9)
+        expected += internal::blockers(net, rank, res, x).size();
+    }
+    EXPECT_EQ(pairs.size(), expected) << seed;
+    for (std::size_t q = 0; q < pairs.size(); ++q) {
+      const auto& p = pairs[q];
+      EXPECT_LT(rank[static_cast<std::size_t>(p.x)], n);
+      EXPECT_GT(res.delays[static_cast<std::size_t>(p.x)], 0.0);
+      EXPECT_LT(rank[static_cast<std::size_t>(p.b)], rank[static_cast<std::size_t>(p.x)]);
+      const auto bl = internal::blockers(net, rank, res, p.x);
+      EXPECT_TRUE(std::any_of(bl.begin(), bl.end(), [&](const auto& b) { return b.robot == p.b; }));
+      EXPECT_TRUE(unique.insert({p.x, p.b}).second) << "pair listed twice";
+      if (q > 0) {
+        EXPECT_GE(res.completion[static_cast<std::size_t>(pairs[q - 1].x)],
+                  res.completion[static_cast<std::size_t>(p.x)]);
+      }
+    }
+    pairs_seen += static_cast<int>(pairs.size());
+  }
+  EXPECT_GT(pairs_seen, 50);
+  // An order no delay resolves has no pairs (the critical moves handle it).
+  Resolution blocked;
+  blocked.status = ResolveStatus::kNoDelaySchedule;
+  EXPECT_TRUE(
+      internal::delayed_pairs(random_network(5, 10, 1), 5, {0, 1, 2, 3, 4}, blocked).empty());
+}
+
+// critical-delayed: deterministic, never worse than the EDF seed, and the delayed sweep really
+// took moves (critical-first never does); the best is no worse than critical-first's on average.
+TEST(CriticalMoves, GaCriticalDelayedSweepFires) {
+  EXPECT_EQ(parse_three_opt_order("critical-delayed"), ThreeOptOrder::kCriticalDelayed);
+  EXPECT_EQ(to_string(ThreeOptOrder::kCriticalDelayed), "critical-delayed");
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const MdNetwork net = random_network(30, 90, seed);
+    SearchOptions so;
+    so.edf_reduction = false;
+    so.ga.seed = seed;
+    so.ga.three_opt_order = ThreeOptOrder::kCriticalDelayed;
+    const auto a = search_priority(net, so);
+    const auto b = search_priority(net, so);
+    EXPECT_EQ(a.order, b.order);
+    EXPECT_EQ(a.evaluations, b.evaluations);
+    check_order(a.order, net.size());
+    EXPECT_EQ(resolve(net, a.order).makespan, a.resolution.makespan);
+    EXPECT_FALSE(better(resolve(net, bottom_level_edf(net).order), a.resolution)) << seed;
+    EXPECT_GT(a.three_opt_delayed_improvements, 0U) << seed;
+    EXPECT_LE(a.three_opt_delayed_improvements, a.three_opt_improvements);
+    so.ga.three_opt_order = ThreeOptOrder::kCriticalFirst;
+    EXPECT_EQ(search_priority(net, so).three_opt_delayed_improvements, 0U);
+  }
+}
+
+// The delayed gate: with k > 0 only the children that critical-first makes no worse than the k-th
+// best get the sweeps, so fewer orders are evaluated and fewer sweep moves taken than with the
+// sweeps on every child; the result stays deterministic and thread-count independent.
+TEST(CriticalMoves, GaDelayedGateSpendsTheSweepsOnTheBestChildren) {
+  int fewer = 0;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const MdNetwork net = random_network(30, 90, seed);
+    SearchOptions so;
+    so.edf_reduction = false;
+    so.ga.seed = seed;
+    so.ga.three_opt_order = ThreeOptOrder::kCriticalDelayed;
+    so.ga.threads = 1;
+    const auto all = search_priority(net, so);
+    so.ga.delayed_gate = 1;
+    const auto gated = search_priority(net, so);
+    so.ga.threads = 2;
+    const auto gated2 = search_priority(net, so);
+    EXPECT_EQ(gated.order, gated2.order);
+    EXPECT_EQ(gated.evaluations, gated2.evaluations);
+    EXPECT_EQ(gated.three_opt_delayed_improvements, gated2.three_opt_delayed_improvements);
+    EXPECT_EQ(resolve(net, gated.order).makespan, gated.resolution.makespan);
+    EXPECT_LE(gated.three_opt_delayed_improvements, all.three_opt_delayed_improvements);
+    fewer += gated.evaluations < all.evaluations ? 1 : 0;
+  }
+  EXPECT_GE(fewer, 3);
+  GaOptions bad;
+  bad.delayed_gate = -1;
+  EXPECT_THROW((void)genetic_search(random_network(5, 10, 1), {0, 1, 2, 3, 4}, {}, {}, bad), Error);
+}
+
+// The stall rule: the GA runs until `stall_generations` generations brought no better makespan,
+// so the last rounds repeat the best; a negative value is refused.
+TEST(CriticalMoves, GaStallRuleStopsAfterGenerationsWithoutImprovement) {
+  const MdNetwork net = random_network(30, 90, 2);
+  SearchOptions so;
+  so.edf_reduction = false;
+  so.ga.three_opt_order = ThreeOptOrder::kCriticalFirst;
+  const auto paper_rule = search_priority(net, so);
+  so.ga.stall_generations = 8;
+  const auto r = search_priority(net, so);
+  ASSERT_GE(r.best_per_round.size(), 4U);
+  const auto& b = r.best_per_round;
+  for (std::size_t q = b.size() - 4; q < b.size(); ++q)
+    EXPECT_LE(b[q] - b.back(), 1e-4 * b.back());  // 4 rounds = 8 generations, no real change
+  EXPECT_GE(r.generations, paper_rule.generations + 4);
+  EXPECT_FALSE(better(paper_rule.resolution, r.resolution));
+  so.ga.stall_generations = -1;
+  EXPECT_THROW((void)search_priority(net, so), Error);
+}
+
+// A worker's exception is rethrown on the caller's thread (never std::terminate): the lowest
+// item that threw wins, for every thread count, and every thread was joined.
+TEST(CriticalMoves, StridedThreadsRethrowAWorkersExceptionOnTheCaller) {
+  const auto caller = std::this_thread::get_id();
+  for (const int threads : {1, 2, 3}) {
+    std::vector<int> done(10, 0);
+    std::vector<std::thread::id> who(10);  // each item writes its own slot
+    try {
+      internal::run_strided(10, threads, [&](int, int c) {
+        who[static_cast<std::size_t>(c)] = std::this_thread::get_id();
+        if (c == 5 || c == 7) throw std::runtime_error("item " + std::to_string(c));
+        done[static_cast<std::size_t>(c)] = 1;
+      });
+      ADD_FAILURE() << "no exception, threads " << threads;
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "item 5") << threads;
+    }
+    EXPECT_EQ(done[0], 1);
+    if (threads == 2) {
+      // Item 5 threw on worker 1 (5 mod 2), not on the caller; the caller finished its items.
+      EXPECT_NE(who[5], caller);
+      EXPECT_EQ(who[8], caller);
+      EXPECT_EQ(done[8], 1);
     }
   }
 }

@@ -7,10 +7,10 @@
 #include <numeric>
 #include <random>
 #include <string>
-#include <thread>
 
 #include "voronav/coordination/internal/critical_moves.hpp"
 #include "voronav/coordination/internal/ga_operators.hpp"
+#include "voronav/coordination/internal/strided_threads.hpp"
 #include "voronav/core/error.hpp"
 
 namespace voronav::coordination {
@@ -121,14 +121,23 @@ std::string_view to_string(SearchKind k) {
 }
 
 std::string_view to_string(ThreeOptOrder o) {
-  return o == ThreeOptOrder::kPaper ? "paper" : "critical-first";
+  switch (o) {
+    case ThreeOptOrder::kPaper:
+      return "paper";
+    case ThreeOptOrder::kCriticalFirst:
+      return "critical-first";
+    case ThreeOptOrder::kCriticalDelayed:
+      return "critical-delayed";
+  }
+  return "?";
 }
 
 ThreeOptOrder parse_three_opt_order(std::string_view s) {
   if (s == "paper") return ThreeOptOrder::kPaper;
   if (s == "critical-first") return ThreeOptOrder::kCriticalFirst;
+  if (s == "critical-delayed") return ThreeOptOrder::kCriticalDelayed;
   throw Error("--ga-three-opt-order", 0,
-              "expected paper|critical-first, got '" + std::string(s) + "'");
+              "expected paper|critical-first|critical-delayed, got '" + std::string(s) + "'");
 }
 
 SearchKind parse_search_kind(std::string_view s) {
@@ -375,6 +384,10 @@ class Ga {
         }
       }
       if (improved) continue;
+      if (o_.three_opt_order == ThreeOptOrder::kCriticalDelayed && !no_delayed_ &&
+          ind.res.status == ResolveStatus::kOk && delayed_sweep(ind, rank, base_order, budget)) {
+        continue;
+      }
       if (ind.res.status != ResolveStatus::kOk) {
         // No listed move gives a delay schedule: random moves until one does.
         budget -= three_opt_random(ind, budget, true);
@@ -387,6 +400,37 @@ class Ga {
       if (budget > 0) ++local_optima_;
       break;
     }
+  }
+
+  /// One sweep over internal::delayed_pairs() of the current order (ThreeOptOrder::
+  /// kCriticalDelayed): for each pair (x, b) with b still above x, "x just above b", then "b just
+  /// below x", each taken when it improves (makespan, sum of arrivals); the sweep goes on from
+  /// the next pair with the new order. True when any move was taken.
+  bool delayed_sweep(Individual& ind, std::vector<int>& rank, std::vector<int>& base_order,
+                     int& budget) {
+    std::vector<int> cand, cand_order;
+    int from = 0, to = 0;
+    bool any = false;
+    for (const auto& pr : internal::delayed_pairs(net_, n_, rank, ind.res)) {
+      for (int kind = 0; kind < 2 && budget > 0; ++kind) {
+        const int px = rank[static_cast<std::size_t>(pr.x)];
+        const int pb = rank[static_cast<std::size_t>(pr.b)];
+        if (pb >= px || px >= n_) break;
+        --budget;
+        const internal::SegmentMove mv =
+            kind == 0 ? internal::SegmentMove{px, px, pb} : internal::SegmentMove{pb, pb, px};
+        internal::apply_segment_move(ind.seq, mv, cand, from, to);
+        if (try_move(ind, cand, base_order, cand_order, from, to)) {
+          ++delayed_improvements_;
+          for (int p = from; p < to; ++p)
+            rank[static_cast<std::size_t>(base_order[static_cast<std::size_t>(p)])] = p;
+          any = true;
+          break;
+        }
+      }
+      if (budget <= 0) break;
+    }
+    return any;
   }
 
   /// Random segment moves that the exact cut cannot exclude, until one improves (true) or
@@ -415,9 +459,26 @@ class Ga {
     return false;
   }
 
-  void three_opt(Individual& ind) {
+  /// The resolution a child must match for the delayed sweeps (GaOptions::delayed_gate): the
+  /// gate-th best of the population the parents come from; nullptr = no gate.
+  const Resolution* gate_of(const std::vector<Individual>& pop, int pop_size) const {
+    if (o_.delayed_gate <= 0 || o_.three_opt_order != ThreeOptOrder::kCriticalDelayed)
+      return nullptr;
+    return &pop[static_cast<std::size_t>(std::min(o_.delayed_gate, pop_size) - 1)].res;
+  }
+
+  /// The child's local search; with a gate (kCriticalDelayed), critical-first first and the
+  /// delayed sweeps only when the child is then no worse than the gate.
+  void three_opt(Individual& ind, const Resolution* gate = nullptr) {
     if (n_ < 3 || o_.three_opt_iterations < 0) return;
-    if (o_.three_opt_order == ThreeOptOrder::kCriticalFirst) {
+    if (gate != nullptr && o_.three_opt_order == ThreeOptOrder::kCriticalDelayed) {
+      no_delayed_ = true;
+      const std::size_t optima = local_optima_;
+      three_opt_critical(ind);
+      local_optima_ = optima;  // counted once, by the pass that ends the search
+      no_delayed_ = false;
+      if (!better(*gate, ind.res)) three_opt_critical(ind);
+    } else if (o_.three_opt_order != ThreeOptOrder::kPaper) {
       three_opt_critical(ind);
     } else {
       three_opt_random(ind, three_opt_budget(), false);
@@ -426,14 +487,14 @@ class Ga {
 
   /// One child of parents pa, pb: DPX, mutation with the mutation rate, 3-opt; every random
   /// draw from the stream `seed`.
-  Individual make_child(const std::vector<int>& pa, const std::vector<int>& pb,
-                        std::uint64_t seed) {
+  Individual make_child(const std::vector<int>& pa, const std::vector<int>& pb, std::uint64_t seed,
+                        const Resolution* gate) {
     rng_.seed(seed);
     std::vector<int> child = ops_.dpx(pa, pb, rng_);
     if (unit() < o_.mutation_rate)
       child = ops_.mutate(child, o_.mutation_min_edges, o_.mutation_max_edges, rng_);
     Individual ind = make(std::move(child));
-    three_opt(ind);
+    three_opt(ind, gate);
     return ind;
   }
 
@@ -455,21 +516,14 @@ class Ga {
       seeds[static_cast<std::size_t>(c)] = rng_();
     }
     children.assign(static_cast<std::size_t>(count), Individual{});
-    const int threads = static_cast<int>(helpers.size());
-    auto work = [&](int t) {
-      for (int c = t; c < count; c += threads) {
-        const auto uc = static_cast<std::size_t>(c);
-        children[uc] = helpers[static_cast<std::size_t>(t)]->make_child(
-            pop[static_cast<std::size_t>(pa[uc])].seq, pop[static_cast<std::size_t>(pb[uc])].seq,
-            seeds[uc]);
-      }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-      pool.emplace_back(work, t);
-    work(0);
-    for (auto& th : pool)
-      th.join();
+    const Resolution* gate = gate_of(pop, pop_size);
+    // An exception on a worker (bad_alloc, an Error) is rethrown here, on the caller's thread.
+    internal::run_strided(count, static_cast<int>(helpers.size()), [&](int t, int c) {
+      const auto uc = static_cast<std::size_t>(c);
+      children[uc] = helpers[static_cast<std::size_t>(t)]->make_child(
+          pop[static_cast<std::size_t>(pa[uc])].seq, pop[static_cast<std::size_t>(pb[uc])].seq,
+          seeds[uc], gate);
+    });
   }
 
   SearchResult run(const std::vector<int>& seed_order) {
@@ -509,6 +563,8 @@ class Ga {
     double prev = pop.front().res.makespan;
     const int elite = std::max(1, static_cast<int>(std::ceil(o_.elitism * pop_size)));
     int crossovers = 0;
+    double stall_best = pop.front().res.makespan;
+    int stall = 0;
     while (n_ >= 2 && out.rounds < o_.max_rounds) {
       std::vector<Individual> children;
       if (o_.threads > 0) {
@@ -524,7 +580,7 @@ class Ga {
         if (unit() < o_.mutation_rate)
           child = ops_.mutate(child, o_.mutation_min_edges, o_.mutation_max_edges, rng_);
         Individual ind = make(std::move(child));
-        three_opt(ind);
+        three_opt(ind, gate_of(pop, pop_size));
         children.push_back(std::move(ind));
         ++crossovers;
       }
@@ -558,6 +614,18 @@ class Ga {
       }
       std::stable_sort(next.begin(), next.end(), by_quality);
       pop = std::move(next);
+      if (o_.stall_generations > 0) {
+        const double cur = pop.front().res.makespan;
+        const bool improved =
+            std::isfinite(cur) && (!std::isfinite(stall_best) ||
+                                   stall_best - cur > o_.convergence * std::max(stall_best, kEps));
+        if (improved) {
+          stall_best = cur;
+          stall = 0;
+        } else {
+          ++stall;
+        }
+      }
       if (crossovers % std::max(1, o_.crossovers_per_round) < o_.crossovers_per_generation) {
         ++out.rounds;
         const double cur = pop.front().res.makespan;
@@ -566,7 +634,11 @@ class Ga {
         const double change =
             both_finite ? std::abs(prev - cur) / std::max(std::abs(prev), kEps) : 1.0;
         prev = cur;
-        if (both_finite && change < o_.convergence) break;
+        if (o_.stall_generations > 0) {
+          if (stall >= o_.stall_generations) break;
+        } else if (both_finite && change < o_.convergence) {
+          break;
+        }
       }
     }
     const Individual& best = pop.front();
@@ -579,11 +651,13 @@ class Ga {
       improvements_ += h->improvements_;
       local_optima_ += h->local_optima_;
       cut_moves_ += h->cut_moves_;
+      delayed_improvements_ += h->delayed_improvements_;
     }
     out.evaluations = evaluations_;
     out.three_opt_improvements = improvements_;
     out.three_opt_local_optima = local_optima_;
     out.three_opt_exact_cuts = cut_moves_;
+    out.three_opt_delayed_improvements = delayed_improvements_;
     return out;
   }
 
@@ -600,6 +674,8 @@ class Ga {
   std::size_t improvements_ = 0;
   std::size_t local_optima_ = 0;
   std::size_t cut_moves_ = 0;
+  std::size_t delayed_improvements_ = 0;
+  bool no_delayed_ = false;
   std::vector<char> in_support_, scratch_;
 };
 
@@ -614,6 +690,8 @@ void check_ga_options(const GaOptions& o) {
   }
   if (!(o.convergence >= 0.0)) bad("convergence", "expected >= 0");
   if (o.max_rounds < 1) bad("max_rounds", "expected >= 1");
+  if (o.stall_generations < 0) bad("stall_generations", "expected >= 0");
+  if (o.delayed_gate < 0) bad("delayed_gate", "expected >= 0");
   if (o.three_opt_depth < 0) bad("three_opt_depth", "expected >= 0");
   if (o.three_opt_patience < 0) bad("three_opt_patience", "expected >= 0");
   if (o.threads < 0 || o.threads > 64) bad("threads", "expected 0..64");

@@ -69,9 +69,14 @@ enum class ThreeOptOrder {
   /// from the new critical robot after each improvement; stops at a local optimum of this
   /// neighbourhood or at the same N (N - 1) cap.
   kCriticalFirst,
+  /// kCriticalFirst, and at its local optimum the same moves for every delayed robot (latest
+  /// completion first; internal::delayed_moves()), accepted when (makespan, sum of arrivals)
+  /// improves; an improvement returns to the critical moves. Stops at a local optimum of both
+  /// lists or at the N (N - 1) cap.
+  kCriticalDelayed,
 };
 [[nodiscard]] std::string_view to_string(ThreeOptOrder o);
-/// Parses "paper", "critical-first"; throws voronav::Error otherwise.
+/// Parses "paper", "critical-first", "critical-delayed"; throws voronav::Error otherwise.
 [[nodiscard]] ThreeOptOrder parse_three_opt_order(std::string_view s);
 
 /// Genetic algorithm parameters; defaults are the paper's (section 5.1, 5.2.2).
@@ -88,6 +93,10 @@ struct GaOptions {
   bool truncation = false;
   double convergence = 1e-4;  ///< stop when the best makespan changes less (relative)
   int max_rounds = 50;        ///< hard limit on rounds
+  /// 0: the convergence rule above (the best makespan of two consecutive rounds). > 0: stop
+  /// instead when the best makespan has not improved by more than `convergence` (relative) for
+  /// this many generations in a row (max_rounds still applies).
+  int stall_generations = 0;
   /// Population size; 0 = the number of robots searched (the paper's "N random orders").
   int population = 0;
   /// 3-opt attempts per child; 0 = N (N - 1) as in the paper; < 0 disables 3-opt.
@@ -100,6 +109,11 @@ struct GaOptions {
   /// evaluated moves in a row did not improve; an improvement returns to the critical moves.
   /// 0 = none.
   int three_opt_patience = 0;
+  /// kCriticalDelayed: 0 = every child gets the delayed sweeps. k > 0: a child first gets
+  /// critical-first alone, and the sweeps (then critical-first again) only if it is then no worse
+  /// than the k-th best order of the population its parents come from (the sweeps cost ~6x the
+  /// critical moves; this spends them on the children that can enter the top).
+  int delayed_gate = 0;
   /// 0: one RNG stream for the whole GA (the results of earlier versions). >= 1: each child of a
   /// generation (crossover, mutation, 3-opt) draws from its own stream, seeded from the main one,
   /// and the children are made on this many threads; the result is the same for every value >= 1.
@@ -127,6 +141,8 @@ struct SearchResult {
   std::size_t three_opt_improvements = 0;  ///< 3-opt moves accepted (all children)
   std::size_t three_opt_local_optima = 0;  ///< children whose 3-opt ended at a local optimum
   std::size_t three_opt_exact_cuts = 0;    ///< random moves skipped: they cannot lower the makespan
+  /// Of three_opt_improvements, the moves taken by the delayed-robot sweep (kCriticalDelayed).
+  std::size_t three_opt_delayed_improvements = 0;
 };
 
 /// True when (makespan, sum_of_arrivals) of a is better than b (with a 1e-9 tolerance).

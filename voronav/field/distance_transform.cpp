@@ -91,7 +91,7 @@ DistanceField distance_transform(const BinaryGrid& blocked, const DistanceTransf
   // The input is binary (0 at sites, +inf elsewhere), so the lower envelope of FH's parabolas is
   // simply the nearest site, the lower row on a tie (Envelope1D picks the lower parabola where
   // two meet); two row-major sweeps (last site above, next site below) find it without the
-  // column-strided envelope. Same distances and rows, 2-3x faster for the whole EDT.
+  // column-strided envelope. Same distances and rows, fewer operations and cache misses.
   std::vector<double> col_d(static_cast<std::size_t>(W) * H);
   std::vector<int> col_arg(static_cast<std::size_t>(W) * H);
   {
@@ -142,8 +142,8 @@ namespace {
 /// cells < r2, as the EDT's exact integer squared distances compare) to a blocked cell. Only
 /// blocked cells with a free 4-neighbour (or on the grid's edge) are spread: the nearest blocked
 /// cell of a free cell always has one (its neighbour toward the free cell is strictly closer, so
-/// it is not blocked). Same grid as the EDT path; 10-20x faster for the one- to few-cell radii of
-/// robots (plan_walk of the networked robots, docs/reproductions/networked.md, "Scale").
+/// it is not blocked). Same grid as the EDT path, much less work for the one- to few-cell radii
+/// of robots (scenario 4's centralized run 4x less CPU: docs/reproductions/networked.md, stop 17).
 constexpr double kDilateMaxR2 = 64.0;  // up to 8 cells; exact integers in the EDT's float
 
 BinaryGrid dilate(const BinaryGrid& blocked, double r2) {

@@ -6,7 +6,7 @@
 // the same (disc(c_i) is in disc(c_i-1) plus its crescent), so a check over it (all free? any
 // occupied?) gives the same answer; a cell may still be visited twice, which such checks allow.
 // Hot spot of the decentralized search (own-edge checks) on scenario 4 and at scale
-// (docs/reproductions/networked.md, "Scale").
+// (docs/reproductions/networked.md, "Issue #13, stop 17").
 #pragma once
 
 #include <algorithm>

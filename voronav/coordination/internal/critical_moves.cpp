@@ -141,6 +141,27 @@ std::vector<SegmentMove> critical_moves(const MdNetwork& net, int n, const std::
   return moves;
 }
 
+std::vector<DelayedPair> delayed_pairs(const MdNetwork& net, int n, const std::vector<int>& rank,
+                                       const Resolution& res) {
+  std::vector<DelayedPair> pairs;
+  if (n < 2 || res.status != ResolveStatus::kOk || res.completion.empty()) return pairs;
+  std::vector<int> delayed;
+  for (int x = 0; x < net.size(); ++x) {
+    if (rank[static_cast<std::size_t>(x)] < n &&
+        res.delays[static_cast<std::size_t>(x)] > kTimeEpsilon)
+      delayed.push_back(x);
+  }
+  std::stable_sort(delayed.begin(), delayed.end(), [&](int a, int b) {
+    return res.completion[static_cast<std::size_t>(a)] >
+           res.completion[static_cast<std::size_t>(b)];
+  });
+  for (const int x : delayed) {
+    for (const Blocker& b : blockers(net, rank, res, x))
+      pairs.push_back({x, b.robot});
+  }
+  return pairs;
+}
+
 void support_of(const MdNetwork& net, const std::vector<int>& rank, int c,
                 std::vector<char>& in_support) {
   in_support.assign(static_cast<std::size_t>(net.size()), 0);

@@ -65,6 +65,21 @@ struct Blocker {
                                                       const std::vector<int>& rank,
                                                       const Resolution& res, int depth);
 
+/// A delayed robot x and one of its blockers b (the sum-of-arrivals side of the neighbourhood):
+/// the moves "x just above b" and "b just below x", by robot, so that they stay meaningful while
+/// a sweep changes the order.
+struct DelayedPair {
+  int x = 0;
+  int b = 0;
+  friend bool operator==(const DelayedPair&, const DelayedPair&) = default;
+};
+
+/// For every robot x in the first n positions with a positive delay, the latest completion first,
+/// each of its blockers b (blockers(), largest shift first). Empty unless res is kOk.
+[[nodiscard]] std::vector<DelayedPair> delayed_pairs(const MdNetwork& net, int n,
+                                                     const std::vector<int>& rank,
+                                                     const Resolution& res);
+
 /// The exact cut: false only when the move cannot lower the makespan. Let S be the critical robot
 /// c with, recursively, every higher neighbour of a robot in S (all that c's delay depends on;
 /// `in_support` marks S by robot). A segment move swaps two adjacent blocks A (above) and B; it
