@@ -106,8 +106,9 @@ struct ExplorationOptions {
   /// Willow, 16 robots, 900 s: tree stalled 1 and 1 robots (seeds 1, 2) without, 0 and 0 with.
   bool unstick = true;
   /// The same for the frontier methods; off by default: on willow (16 robots) it stalled more
-  /// robots (frontier 3 and 7 against 0 and 0; an unstick route stopped by the front guard keeps
-  /// the robot out of the allocation until the watchdog fires again).
+  /// robots (frontier 3 and 7 against 0 and 0; an unstick route stopped by the front guard kept
+  /// the robot out of the allocation until the watchdog fired again). After the block clock fix
+  /// (issue 14, fifth pass) one partial tree-frontier run with it on still stalled a robot.
   bool frontier_unstick = false;
   double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
   double goal_tolerance = 0.3;  ///< [m] a waypoint or goal counts as reached

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "voronav/exploration/unstick.hpp"
 #include "voronav/field/distance_transform.hpp"
@@ -104,6 +105,51 @@ TEST(Unstick, TiesGoToTheLowerCellIndex) {
   const auto t = unstick_target(g, flood, field::distance_transform(g));
   ASSERT_TRUE(t.has_value());
   EXPECT_EQ(*t, (Cell{10, 10}));
+}
+
+// The scan of the reached cells picks the same target as a scan of the whole grid in index order
+// (the implementation it replaced), on random grids with random options.
+TEST(Unstick, SameTargetAsAWholeGridScan) {
+  std::mt19937 rng(14);
+  planning::BfsFlood flood;
+  int compared = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    BinaryGrid g(GridGeometry{40, 30, 0.1, {}}, 0);
+    for (std::size_t k = 0; k < g.size(); ++k)
+      g[k] = static_cast<std::uint8_t>(rng() % 100 < 25 ? 1 : 0);
+    const Cell start{static_cast<int>(rng() % 40), static_cast<int>(rng() % 30)};
+    g[start] = 0;
+    if (flood.flood(g, start, planning::Connectivity::k8) == 0) continue;
+    const field::DistanceField clear = field::distance_transform(g);
+    UnstickOptions o;
+    o.min_path = 0.1 * static_cast<double>(rng() % 10);
+    o.max_path = o.min_path + 0.1 * static_cast<double>(rng() % 20);
+    o.clearance_cap = 0.1 + 0.1 * static_cast<double>(rng() % 5);
+    // Reference: every cell in index order, the first best kept.
+    const auto lo = static_cast<std::int32_t>(std::ceil(o.min_path / 0.1 - 1e-9));
+    const auto hi = static_cast<std::int32_t>(std::floor(o.max_path / 0.1 + 1e-9));
+    std::optional<Cell> want;
+    double best_clear = -1.0;
+    std::int32_t best_steps = 0;
+    for (std::size_t k = 0; k < g.size(); ++k) {
+      const Cell c = g.cell_at(k);
+      const std::int32_t st = flood.steps(g, c);
+      if (st < lo || st > hi) continue;
+      const double cl = std::min(o.clearance_cap, clear.distance_m(c));
+      if (cl > best_clear + 1e-9 || (std::abs(cl - best_clear) <= 1e-9 && st < best_steps)) {
+        want = c;
+        best_clear = cl;
+        best_steps = st;
+      }
+    }
+    const std::optional<Cell> got = unstick_target(g, flood, clear, o);
+    ASSERT_EQ(got.has_value(), want.has_value()) << "trial " << trial;
+    if (want) {
+      EXPECT_EQ(*got, *want) << "trial " << trial;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 20);
 }
 
 }  // namespace
