@@ -35,6 +35,27 @@ std::vector<int> random_order(int n, std::mt19937_64& rng) {
   return order;
 }
 
+// search_priority on a random network with the 3-opt order `order` (no EDF reduction), checked as
+// every GA test needs: the same seed gives the same order and evaluation count, the order is a
+// permutation whose exact resolution has the reported makespan, and it is never worse than the
+// EDF seed's.
+SearchResult checked_search(const MdNetwork& net, std::uint64_t seed, ThreeOptOrder order,
+                            int patience = 0) {
+  SearchOptions so;
+  so.edf_reduction = false;
+  so.ga.seed = seed;
+  so.ga.three_opt_order = order;
+  so.ga.three_opt_patience = patience;
+  SearchResult a = search_priority(net, so);
+  const SearchResult b = search_priority(net, so);
+  EXPECT_EQ(a.order, b.order);
+  EXPECT_EQ(a.evaluations, b.evaluations);
+  check_order(a.order, net.size());
+  EXPECT_EQ(resolve(net, a.order).makespan, a.resolution.makespan);
+  EXPECT_FALSE(better(resolve(net, bottom_level_edf(net).order), a.resolution)) << seed;
+  return a;
+}
+
 // The shifts of a robot's blockers add up to its delay, and every blocker is above it.
 TEST(CriticalMoves, BlockerShiftsSumToTheDelay) {
   int robots_with_blockers = 0;
@@ -160,21 +181,8 @@ TEST(CriticalMoves, GaCriticalFirstIsDeterministicAndNeverWorseThanTheSeed) {
   EXPECT_EQ(parse_three_opt_order("paper"), ThreeOptOrder::kPaper);
   EXPECT_THROW((void)parse_three_opt_order("best"), Error);
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-    const MdNetwork net = random_network(30, 90, seed);
-    SearchOptions so;
-    so.edf_reduction = false;
-    so.ga.seed = seed;
-    so.ga.three_opt_order = ThreeOptOrder::kCriticalFirst;
-    so.ga.three_opt_patience = seed % 2 == 0 ? 20 : 0;
-    const auto a = search_priority(net, so);
-    const auto b = search_priority(net, so);
-    EXPECT_EQ(a.order, b.order);
-    EXPECT_EQ(a.evaluations, b.evaluations);
-    check_order(a.order, net.size());
-    const Resolution full = resolve(net, a.order);
-    EXPECT_EQ(full.makespan, a.resolution.makespan);
-    const auto edf = bottom_level_edf(net);
-    EXPECT_FALSE(better(resolve(net, edf.order), a.resolution)) << seed;
+    const auto a = checked_search(random_network(30, 90, seed), seed, ThreeOptOrder::kCriticalFirst,
+                                  seed % 2 == 0 ? 20 : 0);
     EXPECT_GT(a.three_opt_improvements, 0U);
     EXPECT_GT(a.three_opt_local_optima, 0U);
   }
@@ -258,19 +266,12 @@ TEST(CriticalMoves, GaCriticalDelayedSweepFires) {
   EXPECT_EQ(to_string(ThreeOptOrder::kCriticalDelayed), "critical-delayed");
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     const MdNetwork net = random_network(30, 90, seed);
+    const auto a = checked_search(net, seed, ThreeOptOrder::kCriticalDelayed);
+    EXPECT_GT(a.three_opt_delayed_improvements, 0U) << seed;
+    EXPECT_LE(a.three_opt_delayed_improvements, a.three_opt_improvements);
     SearchOptions so;
     so.edf_reduction = false;
     so.ga.seed = seed;
-    so.ga.three_opt_order = ThreeOptOrder::kCriticalDelayed;
-    const auto a = search_priority(net, so);
-    const auto b = search_priority(net, so);
-    EXPECT_EQ(a.order, b.order);
-    EXPECT_EQ(a.evaluations, b.evaluations);
-    check_order(a.order, net.size());
-    EXPECT_EQ(resolve(net, a.order).makespan, a.resolution.makespan);
-    EXPECT_FALSE(better(resolve(net, bottom_level_edf(net).order), a.resolution)) << seed;
-    EXPECT_GT(a.three_opt_delayed_improvements, 0U) << seed;
-    EXPECT_LE(a.three_opt_delayed_improvements, a.three_opt_improvements);
     so.ga.three_opt_order = ThreeOptOrder::kCriticalFirst;
     EXPECT_EQ(search_priority(net, so).three_opt_delayed_improvements, 0U);
   }
