@@ -11,6 +11,7 @@
 
 #include "voronav/core/error.hpp"
 #include "voronav/core/stepper.hpp"
+#include "voronav/exploration/internal/block_clock.hpp"
 #include "voronav/exploration/unstick.hpp"
 #include "voronav/field/distance_transform.hpp"
 #include "voronav/mapping/occupancy_map.hpp"
@@ -38,7 +39,7 @@ struct Agent {
   AgentMode mode = AgentMode::kReactive;
   std::vector<Vec2> route;
   std::size_t next = 0;
-  double blocked_time = 0.0;  // [s] wanted to drive forward but took no forward step
+  internal::BlockClock block;  // wanted to drive forward but took no forward step (3 s rule)
   double since_progress = 0.0;
   double reactive_until = 0.0;         // [s] a deadlocked robot searches reactively until then
   std::optional<Vec2> goal;            // frontier goal
@@ -385,7 +386,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     a.route = std::move(route);
     a.next = 0;
     a.mode = a.route.empty() ? AgentMode::kReactive : AgentMode::kFollow;
-    // Not the block clock: a new route does not unblock a robot (below, "Only a forward step").
+    a.block.on_new_route();  // not progress: the block clock goes on (block_clock.hpp)
     a.since_progress = 0.0;
     a.unsticking = false;
   };
@@ -949,7 +950,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
             front = std::min(front, static_cast<double>(r));
           if (front < body + 0.12 && cmd.v > 0.0) {
             cmd.v = 0.0;
-            a.blocked_time += o.dt;
+            a.block.on_step_refused(o.dt);
             // Right of way: blocked by a robot with a lower index (not by a wall), this robot
             // backs off for a moment so that a jam in a doorway dissolves.
             const robot::LaserScan walls = robot::cast_scan(blocked, pose, guard_laser, {});
@@ -964,13 +965,13 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           }
           if (t < a.back_off_until) cmd = {-0.1, 0.0};
           a.since_progress += o.dt;
-          if (a.blocked_time > 3.0 || a.since_progress > 30.0) {
+          if (a.block.fires() || a.since_progress > 30.0) {
             // Deadlock or no progress: search reactively for a while, then drop the goal (banned
             // for this robot). Banning only goals without progress for 30 s, not blocked ones,
             // was tried (issue 14, fifth pass): depot seed 8 (frontier) then reached 99.5 %
             // instead of 96.3 %, but willow seed 2 (16 robots, frontier) stalled 4 robots.
             a.reactive_until = t + 5.0;
-            a.blocked_time = 0.0;
+            a.block.on_fired();
             a.since_progress = 0.0;
             if (a.unsticking) {
               end_unstick(a, t);
@@ -998,7 +999,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         if (robot::disc_collides(blocked, next, body + 0.01, others)) {
           cmd.v = 0.0;
           if (cmd.omega == 0.0) cmd.omega = o.controller.obs_avoid;
-          a.blocked_time += o.dt;
+          a.block.on_step_refused(o.dt);
         } else if (cmd.v > 0.0) {
           // Only a forward step that is taken ends a block, for every method: not a step the
           // guard lets through (its 13 beams may see a clear front while the footprint check
@@ -1006,7 +1007,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           // block rule never firing: a tree leg until the 20 s watchdog (willow, 16 robots,
           // tree), and tree-frontier robots whose allocation changed goal every 2 s in a doorway
           // jam for 60 s and more (issue 14, fifth pass).
-          a.blocked_time = 0.0;
+          a.block.on_forward_step_taken();
         }
       }
       a.body.command(cmd);
