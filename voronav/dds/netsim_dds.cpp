@@ -84,6 +84,9 @@ std::string metrics_to_json(const sim::NetSimMetrics& m) {
                   {"changes_applied", m.changes_applied},
                   {"point_searches", m.point_searches},
                   {"search_copies_ignored", m.search_copies_ignored},
+                  {"sensing_walks", m.sensing_walks},
+                  {"sensing_walk_m", m.sensing_walk_m},
+                  {"route_used_sensing", m.route_used_sensing},
                   {"relay_travel_m", m.relay_travel_m},
                   {"simulated_s", m.simulated_s},
                   {"wall_s", m.wall_s},
@@ -129,6 +132,9 @@ sim::NetSimMetrics metrics_from_json(const std::string& text) {
     m.changes_applied = j.at("changes_applied").get<int>();
     m.point_searches = j.value("point_searches", std::uint64_t{0});
     m.search_copies_ignored = j.value("search_copies_ignored", std::uint64_t{0});
+    m.sensing_walks = j.value("sensing_walks", 0);
+    m.sensing_walk_m = j.value("sensing_walk_m", 0.0);
+    m.route_used_sensing = j.value("route_used_sensing", false);
     m.relay_travel_m = j.at("relay_travel_m").get<double>();
     m.simulated_s = j.at("simulated_s").get<double>();
     m.wall_s = j.at("wall_s").get<double>();

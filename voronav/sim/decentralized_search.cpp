@@ -6,8 +6,11 @@
 // (docs/reproductions/networked.md, "Hand-off").
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <queue>
 
 #include "voronav/core/error.hpp"
+#include "voronav/planning/grid_planner.hpp"
 #include "voronav/sim/agent_internal.hpp"
 #include "voronav/sim/robot_agent.hpp"
 
@@ -21,6 +24,9 @@ namespace {
 /// The hand-off margin [m]: a neighbour takes the Search on when it is this much closer to the
 /// destination than the nearest point the sender sent.
 constexpr double kHandOffM = 1.0;
+
+/// A sensing walk that made fewer cells known free than this sends no Search (cells).
+constexpr std::size_t kOpenedCells = 25;
 
 /// A copy of a Search is new when it lowers a cost by more than this [m] (the re-forward test
 /// below uses the same margin).
@@ -279,6 +285,168 @@ bool RobotAgent::source_walk_check() {
   return false;
 }
 
+// ---- figure 18, the boxed-in source ------------------------------------------------------------
+/// The source's route is blocked, no Repair answer it could take came and its own map holds no
+/// way back to the route (timers): a new Search at once would be answered from the relays' maps,
+/// which still hold the closed doors open (s2 runs 10 and 14: every answer was blocked at once).
+/// Figure 18: a robot goes and senses the gap on the source's behalf. The gap is where the
+/// source's own way to the destination leaves its known space: the first move of its walk planned
+/// on its map (unknown = free, seen walls and closures blocked) that is not known free. No robot
+/// in radio range can be told to go there (the messages of Tables 1-5 carry no such request), so
+/// the source goes itself, as the "or the source itself when no one can"; on the way it
+/// answers itself when its map shows a way, and where it reaches the gap it sends a new Search,
+/// whose open points now reach across the gap (docs/reproductions/networked.md, "Sensing walk").
+/// Returns false (nothing started) when the option is off or its map holds no way at all.
+bool RobotAgent::start_sensing_walk() {
+  auto& s = r_;
+  if (!opt().sense_when_boxed_in) return false;
+  // Dijkstra over the cells the source knows are free (unknown counts as blocked, inflated by
+  // the robot radius, so it never drives into unseen space: a wall cell hidden behind the cell
+  // it sees is unknown too). A gap is a reachable cell with an unknown 4-neighbour; it goes to
+  // the one with the least way there plus straight distance on to the destination.
+  const OccupancyGrid& g = s.map.grid();
+  const Cell off = s.map.offset();
+  const auto& wg = scen().world.geometry();
+  const auto here = wg.world_to_cell(s.pos);
+  if (!here || g.width() == 0) return false;
+  const Cell start = *here - off;
+  if (!g.contains(start)) return false;
+  BinaryGrid blocked(g.geometry(), 0);
+  for (std::size_t i = 0; i < g.size(); ++i)
+    blocked[i] = g[i] == kFree ? 0 : 1;
+  BinaryGrid pg =
+      timed([&] { return planning::make_planning_grid(blocked, opt().robot_radius_m); });
+  pg[start] = 0;
+  const int w = g.width();
+  std::vector<double> dist(g.size(), kInf);
+  std::vector<std::int32_t> parent(g.size(), -1);
+  using Item = std::pair<double, std::int32_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  // An unknown cell next to a seen wall cell is most likely wall hidden behind it (sense() sees
+  // along Bresenham lines): a gap opens onto unknown cells away from seen walls.
+  const auto next_to_wall = [&g](Cell n) {
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const Cell m{n.x + dx, n.y + dy};
+        if (g.contains(m) && g[m] == kOccupied) return true;
+      }
+    return false;
+  };
+  const auto idx = [w](Cell c) { return static_cast<std::int32_t>(c.y * w + c.x); };
+  dist[static_cast<std::size_t>(idx(start))] = 0.0;
+  open.push({0.0, idx(start)});
+  const double res = g.resolution();
+  const Vec2 dest = scen().destination;
+  double best = kInf;
+  std::int32_t best_i = -1;
+  std::size_t expanded = 0;
+  while (!open.empty()) {
+    const auto [d, i] = open.top();
+    open.pop();
+    if (d > dist[static_cast<std::size_t>(i)]) continue;
+    ++expanded;
+    const Cell c{i % w, i / w};
+    bool gap = false;
+    for (Cell n : {Cell{c.x + 1, c.y}, Cell{c.x - 1, c.y}, Cell{c.x, c.y + 1}, Cell{c.x, c.y - 1}})
+      if (!g.contains(n) || (g[n] == kUnknown && !next_to_wall(n))) gap = true;
+    if (gap && i != idx(start)) {
+      const double score = d + distance(wg.cell_center(c + off), dest);
+      if (score < best) {
+        best = score;
+        best_i = i;
+      }
+    }
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const Cell n{c.x + dx, c.y + dy};
+        if ((dx == 0 && dy == 0) || !g.contains(n) || pg[n] != 0) continue;
+        if (dx != 0 && dy != 0 && (pg[Cell{c.x + dx, c.y}] != 0 || pg[Cell{c.x, c.y + dy}] != 0))
+          continue;  // no corner cutting
+        const double nd = d + res * ((dx != 0 && dy != 0) ? std::sqrt(2.0) : 1.0);
+        if (nd < dist[static_cast<std::size_t>(idx(n))]) {
+          dist[static_cast<std::size_t>(idx(n))] = nd;
+          parent[static_cast<std::size_t>(idx(n))] = i;
+          open.push({nd, idx(n)});
+        }
+      }
+  }
+  report_.metrics.work += g.size() * 2 + expanded;
+  if (best_i < 0) return false;  // no gap left in its known space
+  std::vector<Vec2> way;
+  for (std::int32_t i = best_i; i >= 0 && i != idx(start); i = parent[static_cast<std::size_t>(i)])
+    way.push_back(wg.cell_center(Cell{i % w, i / w} + off));
+  std::reverse(way.begin(), way.end());
+  s.waypoints = std::move(way);
+  s.wp = 0;
+  map_before_walk_ = s.map;
+  boxed_in_ = true;
+  s.walk = Walk::kSense;
+  s.walk_since_check = 0.0;
+  s.walk_map_changed = false;
+  search_deadline_ = kInf;  // no Search retry while it walks: it searches again at the gap
+  ++report_.sensing_walks;
+  NS_DEBUG("t=%.1f source boxed in at (%.1f,%.1f): senses the gap at (%.1f,%.1f)\n", now_, s.pos.x,
+           s.pos.y, s.waypoints.back().x, s.waypoints.back().y);
+  return true;
+}
+
+/// The sensing walk, every metre its map changed and at its end: when the source's own map now
+/// holds a way to the destination it answers itself; where the walk ends (at the gap, or where
+/// no way on is left) it sends a new Search from there.
+void RobotAgent::sensing_walk_progress(bool arrived) {
+  auto& r = r_;
+  if (source_sees_way()) {
+    end_sensing_walk();
+    trail_ = {r.pos};
+    r.walk = Walk::kIdle;
+    r.waypoints.clear();
+    answer_path();
+    return;
+  }
+  if (!arrived) return;
+  const std::size_t opened = end_sensing_walk();
+  NS_DEBUG("t=%.1f source sensed the gap at (%.1f,%.1f): %zu cells found free\n", now_, r.pos.x,
+           r.pos.y, opened);
+  r.walk = Walk::kIdle;
+  r.waypoints.clear();
+  // The gap showed (almost) only wall: the next gap at once; a Search only where the walk found
+  // new free space (kOpenedCells, 1 m^2 at 0.2 m cells), which its open points now reach into.
+  if (opened < kOpenedCells && start_sensing_walk()) return;
+  start_search();
+  // It waits for an answer as long as for a Repair answer, then senses the next gap (timers).
+  search_deadline_ = now_ + opt().repair_timeout_s;
+}
+
+/// Marks the world cells the walk made known (unknown when it started, known now).
+std::size_t RobotAgent::end_sensing_walk() {
+  std::size_t opened = 0;
+  if (!map_before_walk_) return opened;
+  const auto& m = r_.map;
+  if (sensed_by_walks_.size() == 0) sensed_by_walks_ = BinaryGrid(scen().world.geometry(), 0);
+  for (int y = 0; y < m.grid().height(); ++y)
+    for (int x = 0; x < m.grid().width(); ++x) {
+      const Cell c = Cell{x, y} + m.offset();
+      if (m.grid()[Cell{x, y}] != kUnknown && map_before_walk_->at(c) == kUnknown &&
+          sensed_by_walks_.geometry().contains(c)) {
+        sensed_by_walks_[c] = 1;
+        if (m.grid()[Cell{x, y}] == kFree) ++opened;
+      }
+    }
+  map_before_walk_.reset();
+  return opened;
+}
+
+/// At arrival: the route the source drove used what its sensing walks sensed when one of its
+/// points past the first (the source's own start) lies on a cell a walk made known.
+void RobotAgent::note_route_used_sensing() {
+  if (sensed_by_walks_.size() == 0) return;
+  const auto& g = sensed_by_walks_.geometry();
+  for (std::size_t i = 1; i < route_.size(); ++i) {
+    const auto c = g.world_to_cell(route_[i].position);
+    if (c && sensed_by_walks_[*c]) report_.route_used_sensing = true;
+  }
+}
+
 // ---- Table 2: a relay -------------------------------------------------------------------------
 void RobotAgent::on(const Header& h, const SearchMessage& m) {
   auto& r = r_;
@@ -486,6 +654,10 @@ std::size_t RobotAgent::sender_of(std::size_t i) const {
 
 void RobotAgent::walk_progress(bool arrived) {
   auto& r = r_;
+  if (r.walk == Walk::kSense) {
+    sensing_walk_progress(arrived);
+    return;
+  }
   if (r.walk == Walk::kBack) {
     if (arrived) r.walk = Walk::kIdle;
     return;

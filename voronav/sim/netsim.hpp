@@ -108,6 +108,12 @@ struct NetSimOptions {
   /// When a robot's walk (bridge, destination) cannot be planned in the window around its two
   /// ends (known walls close it), plan again on a window holding the robot's whole local map.
   bool walk_replan_whole_map = false;
+  /// Figure 18 for a boxed-in source (issue #13): when the source's route is blocked and neither
+  /// a Repair answer it can take nor a replan on its own map gets it on, it goes and senses the
+  /// gap of its own known space that its way to the destination crosses (the first move of its
+  /// optimistic way that is not known free), then sends a new Search from there
+  /// (docs/reproductions/networked.md, "Sensing walk"). false = a new Search at once, as before.
+  bool sense_when_boxed_in = true;
   int max_search_attempts = 8;
   double link_timeout_s = 0.3;  ///< hop-by-hop retry after no LinkAck [s]
   int link_retries = 6;
@@ -234,6 +240,11 @@ struct NetSimMetrics {
   /// ignored as not new (Table 2 line 4; docs/reproductions/networked.md).
   std::uint64_t point_searches = 0;
   std::uint64_t search_copies_ignored = 0;
+  /// Sensing walks of the boxed-in source (sense_when_boxed_in): how many, the metres it drove
+  /// on them, and whether the route it arrived on went through the space one of them sensed.
+  int sensing_walks = 0;
+  double sensing_walk_m = 0.0;
+  bool route_used_sensing = false;
   double simulated_s = 0.0;
   double wall_s = 0.0;
   std::vector<RobotMetrics> robots;

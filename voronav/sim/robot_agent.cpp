@@ -58,6 +58,9 @@ NetSimMetrics aggregate_metrics(const std::vector<AgentReport>& robots, std::siz
     M.repair_answers += a.repair_answers;
     M.point_searches += static_cast<std::uint64_t>(a.point_searches);
     M.search_copies_ignored += static_cast<std::uint64_t>(a.search_copies_ignored);
+    M.sensing_walks += a.sensing_walks;
+    M.sensing_walk_m += a.sensing_walk_m;
+    M.route_used_sensing = M.route_used_sensing || a.route_used_sensing;
     for (std::size_t t = 0; t < by_type.size(); ++t) {
       by_type[t].messages += rm.sent_by_type[t].messages;
       by_type[t].bytes += rm.sent_by_type[t].bytes;
@@ -288,6 +291,11 @@ void RobotAgent::timers() {
     if (r_.bridge_at >= 0.0 && now_ + 1e-9 >= r_.bridge_at) start_bridge();
     pending_step();
     if (!is_source()) return;
+    if (!route_.empty()) boxed_in_ = false;
+    if (route_.empty() && boxed_in_ && r_.walk == Walk::kIdle && now_ + 1e-9 >= search_deadline_) {
+      // Boxed in, and the Search sent at the gap got no answer: sense the next gap.
+      if (!start_sensing_walk()) boxed_in_ = false;
+    }
     if (route_.empty() && now_ + 1e-9 >= search_deadline_ &&
         report_.search_attempts < opt().max_search_attempts)
       retry_search();
@@ -303,7 +311,8 @@ void RobotAgent::timers() {
       if (!rp) {
         route_.clear();
         r_.waypoints.clear();
-        start_search();
+        // Boxed in: sense the gap first (figure 18), then search from there.
+        if (!start_sensing_walk()) start_search();
       }
     }
   } else if (is_source() && collecting_ && now_ - last_ack_ >= opt().collect_s) {
@@ -354,6 +363,7 @@ void RobotAgent::move(double now_s) {
   }
   report_.metrics.travel_m += moved;
   if (is_source() && moved > 0.0) trail_.push_back(r.pos);
+  if (is_source() && r.walk == Walk::kSense) report_.sensing_walk_m += moved;
   if (!is_source() && (r.walk == Walk::kBridge || r.walk == Walk::kDestination)) {
     // Trail points every 2 m, and before any corner: each straight step between two of them is
     // known free (the robot drove it and sensed around it).
@@ -371,6 +381,7 @@ void RobotAgent::move(double now_s) {
   if (is_source() && r.wp >= r.waypoints.size() && distance(r.pos, scen().destination) < 0.35) {
     report_.arrived = true;
     report_.arrival_time_s = now_;
+    note_route_used_sensing();
     // It walked there by itself without ever getting a route.
     if (report_.found_by == RouteFoundBy::kNone) report_.found_by = RouteFoundBy::kSourceAlone;
     holding_ = false;

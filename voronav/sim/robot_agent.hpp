@@ -74,6 +74,10 @@ struct AgentReport {
   int point_searches = 0;    ///< decentralized point searches run (try_continue)
   /// Copies of an already forwarded Search ignored as not new (Table 2 line 4).
   int search_copies_ignored = 0;
+  /// (source) Sensing walks of a boxed-in source (NetSimMetrics::sensing_walks).
+  int sensing_walks = 0;
+  double sensing_walk_m = 0.0;
+  bool route_used_sensing = false;
 };
 
 /// Sums the robots' reports (eq. 3–9) into the metrics of a run; `source` is the source's index.
@@ -119,7 +123,7 @@ class RobotAgent {
     std::size_t offset = 0;  // first of its points in s_in.open_points
     std::size_t count = 0;
   };
-  enum class Walk { kIdle, kBridge, kDestination, kBack };
+  enum class Walk { kIdle, kBridge, kDestination, kBack, kSense };
   struct State {
     network::RobotId id;
     Vec2 pos;
@@ -231,6 +235,10 @@ class RobotAgent {
   void retry_search();
   [[nodiscard]] bool source_sees_way();
   [[nodiscard]] std::size_t own_index_at(Vec2 p) const;
+  bool start_sensing_walk();
+  void sensing_walk_progress(bool arrived);
+  std::size_t end_sensing_walk();
+  void note_route_used_sensing();
   // decentralized: Path (Table 3)
   void deliver_path(network::PathMessage p, network::RobotId to, Vec2 toward, bool carrier);
   void pending_step();
@@ -296,6 +304,12 @@ class RobotAgent {
   // metres since it last looked for one, and the robots it already handed the Search to.
   double source_walk_since_ = 0.0;
   std::vector<network::RobotId> handed_to_;
+  // Source, sensing walks (figure 18, boxed in): its map when the walk started, and the world
+  // cells the walks made known (1); the route it arrives on used them when one of its points
+  // past its start lies on such a cell.
+  std::optional<LocalMap> map_before_walk_;
+  bool boxed_in_ = false;  // since its last sensing walk, until it has a route again
+  BinaryGrid sensed_by_walks_;
   std::uint32_t repair_seq_ = 0;
   // Source: the Repair it waits an answer for, re-sent (same Num) with back-off (repair_resend_s).
   std::optional<network::RepairMessage> repair_out_;

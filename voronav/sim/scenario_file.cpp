@@ -201,6 +201,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
            "source_straight_start",
            "frontier_by_points",
            "walk_replan_whole_map",
+           "sense_when_boxed_in",
            "seed"});
   NetSimOptions& o = f.options;
   if (const auto m = n["method"]) {
@@ -250,6 +251,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   flag("path_fallback_after_retries", o.path_fallback_after_retries);
   flag("frontier_by_points", o.frontier_by_points);
   flag("walk_replan_whole_map", o.walk_replan_whole_map);
+  flag("sense_when_boxed_in", o.sense_when_boxed_in);
   if (const auto m = n["seed"]) o.seed = rd.integer<std::uint64_t>(m, "options.seed", 0, kMaxU64);
   if (const auto r = n["radio"]) {
     rd.keys(r, "options.radio",
@@ -497,6 +499,7 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
       << "  source_straight_start: " << (o.source_straight_start ? "true" : "false") << "\n"
       << "  frontier_by_points: " << (o.frontier_by_points ? "true" : "false") << "\n"
       << "  walk_replan_whole_map: " << (o.walk_replan_whole_map ? "true" : "false") << "\n"
+      << "  sense_when_boxed_in: " << (o.sense_when_boxed_in ? "true" : "false") << "\n"
       << "  seed: " << o.seed << "\n";
   std::ofstream f(file);
   if (!f) throw Error(path, 0, "cannot write the scenario file");

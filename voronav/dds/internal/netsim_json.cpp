@@ -47,7 +47,10 @@ json agent_report_json(const sim::AgentReport& a) {
           {"repair_answers_refused", a.repair_answers_refused},
           {"changes_on_route", a.changes_on_route},
           {"point_searches", a.point_searches},
-          {"search_copies_ignored", a.search_copies_ignored}};
+          {"search_copies_ignored", a.search_copies_ignored},
+          {"sensing_walks", a.sensing_walks},
+          {"sensing_walk_m", a.sensing_walk_m},
+          {"route_used_sensing", a.route_used_sensing}};
 }
 sim::AgentReport agent_report_from(const json& j) {
   sim::AgentReport a;
@@ -71,6 +74,9 @@ sim::AgentReport agent_report_from(const json& j) {
   a.changes_on_route = j.at("changes_on_route").get<int>();
   a.point_searches = j.value("point_searches", 0);
   a.search_copies_ignored = j.value("search_copies_ignored", 0);
+  a.sensing_walks = j.value("sensing_walks", 0);
+  a.sensing_walk_m = j.value("sensing_walk_m", 0.0);
+  a.route_used_sensing = j.value("route_used_sensing", false);
   return a;
 }
 
