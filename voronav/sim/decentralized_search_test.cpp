@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <optional>
+#include <string>
 
 #include "voronav/network/messages.hpp"
 #include "voronav/network/sim_radio.hpp"
 #include "voronav/sim/robot_agent.hpp"
+#include "voronav/sim/scenario_file.hpp"
 
 namespace voronav::sim {
 namespace {
@@ -110,6 +112,36 @@ TEST(DecentralizedSearch, ACopyThatLowersNoCostIsIgnoredAndOneThatDoesIsHandled)
   EXPECT_TRUE(h.forwarded().empty());
   EXPECT_EQ(h.relay->report().point_searches, 2);
   EXPECT_EQ(h.relay->report().search_copies_ignored, 3);
+}
+
+}  // namespace
+}  // namespace voronav::sim
+
+namespace voronav::sim {
+namespace {
+
+// Figure 18 for a boxed-in source (sense_when_boxed_in): scenario 2 run 10 of Table 7, as
+// `voronav netsim --scenario 2 --run 10 --write-scenario` writes it (data/netsim). After the
+// second change the source stands in a room whose two known exits are closed; the relays in
+// range stand at the destination with maps that still hold the doors open, so every answer is
+// blocked at once. Without the sensing walk it never leaves the room; with it, it senses the
+// gaps of its known space, searches again from there and arrives.
+TEST(DecentralizedSearch, ABoxedInSourceSensesTheGapsOfItsKnownSpaceAndArrives) {
+  const auto f =
+      load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/s2_run10_boxed_in.yaml");
+  const NetSimScenario& sc = f.scenario;
+  NetSimOptions o = f.options;
+  o.method = Method::kDecentralized;
+  o.sense_when_boxed_in = false;
+  const auto off = run_netsim(sc, o).metrics;
+  EXPECT_FALSE(off.success) << "the s2r10 trace: boxed in, no arrival without the rule";
+  EXPECT_EQ(off.sensing_walks, 0);
+  o.sense_when_boxed_in = true;
+  const auto on = run_netsim(sc, o).metrics;
+  EXPECT_TRUE(on.success);
+  EXPECT_GE(on.sensing_walks, 1);
+  EXPECT_GT(on.sensing_walk_m, 0.0);
+  EXPECT_LE(on.sensing_walk_m, on.source_travel_m);
 }
 
 }  // namespace

@@ -311,8 +311,12 @@ void RobotAgent::timers() {
       if (!rp) {
         route_.clear();
         r_.waypoints.clear();
-        // Boxed in: sense the gap first (figure 18), then search from there.
-        if (!start_sensing_walk()) start_search();
+        // Boxed in (the Search sent after the last block got it nowhere): sense the gap first
+        // (figure 18), then search from there.
+        const bool boxed = searched_after_block_ &&
+                           distance(*searched_after_block_, r_.pos) <= opt().sensing_range_m;
+        searched_after_block_ = r_.pos;
+        if (!boxed || !start_sensing_walk()) start_search();
       }
     }
   } else if (is_source() && collecting_ && now_ - last_ack_ >= opt().collect_s) {

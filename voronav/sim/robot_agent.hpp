@@ -308,7 +308,10 @@ class RobotAgent {
   // cells the walks made known (1); the route it arrives on used them when one of its points
   // past its start lies on such a cell.
   std::optional<LocalMap> map_before_walk_;
-  bool boxed_in_ = false;  // since its last sensing walk, until it has a route again
+  bool boxed_in_ = false;
+  // Where it last searched anew after a block it could not repair (a second block within the
+  // sensing range of it means the answers lead nowhere: it is boxed in).
+  std::optional<Vec2> searched_after_block_;  // since its last sensing walk, until it has a route again
   BinaryGrid sensed_by_walks_;
   std::uint32_t repair_seq_ = 0;
   // Source: the Repair it waits an answer for, re-sent (same Num) with back-off (repair_resend_s).
