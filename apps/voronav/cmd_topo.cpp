@@ -32,6 +32,7 @@ struct TopoArgs {
   double max_rise_walk = topology::TopologyOptions{}.max_rise_walk;
   double passage_length = topology::TopologyOptions{}.passage_length;
   double passage_rise_ratio = topology::TopologyOptions{}.passage_rise_ratio;
+  bool passage_bulges = topology::TopologyOptions{}.passage_bulges;
   bool validate_sides = topology::TopologyOptions{}.validate_sides;
   double room_test_elongation = topology::TopologyOptions{}.room_test_elongation;
   double min_wall_area = topology::TopologyOptions{}.min_wall_area;
@@ -62,6 +63,7 @@ void run(const TopoArgs& a) {
   opt.max_rise_walk = a.max_rise_walk;
   opt.passage_length = a.passage_length;
   opt.passage_rise_ratio = a.passage_rise_ratio;
+  opt.passage_bulges = a.passage_bulges;
   opt.validate_sides = a.validate_sides;
   opt.room_test_elongation = a.room_test_elongation;
   opt.min_wall_area = a.min_wall_area;
@@ -225,6 +227,10 @@ void setup(CLI::App& app) {
                   "A passage end is cut only where the clearance beyond it reaches (1 + this) x "
                   "the passage's")
       ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--passage-bulges", args->passage_bulges,
+                  "A passage goes on through a bend or widening that narrows again before it "
+                  "opens, and is cut at that last narrowing (true/false)")
       ->capture_default_str();
   cmd->add_option("--validate-sides", args->validate_sides,
                   "Room test: drop a critical line when a region it separates is no wider than "

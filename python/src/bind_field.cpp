@@ -256,6 +256,7 @@ void bind_field(py::module_& m) {
       .def_readwrite("passage_length", &topology::TopologyOptions::passage_length,
                      "[m], 0 = off; a passage is cut at its ends where the clearance rises")
       .def_readwrite("passage_rise_ratio", &topology::TopologyOptions::passage_rise_ratio)
+      .def_readwrite("passage_bulges", &topology::TopologyOptions::passage_bulges)
       .def_readwrite("min_wall_area", &topology::TopologyOptions::min_wall_area,
                      "[m^2], 0 = off; no critical point on smaller obstacle pieces")
       .def_readwrite("validate_sides", &topology::TopologyOptions::validate_sides,

@@ -30,6 +30,7 @@ class TopologyOptions:
     max_rise_walk: float  # [m]
     passage_length: float  # [m]
     passage_rise_ratio: float
+    passage_bulges: bool
     min_wall_area: float  # [m^2]
     validate_sides: bool
     room_test_elongation: float

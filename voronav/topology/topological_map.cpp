@@ -52,6 +52,7 @@ class MinimaFinder {
         walk_(o.max_rise_walk / res),
         passage_(o.passage_length / res),
         passage_rise_(o.passage_rise_ratio),
+        bulges_(o.passage_bulges),
         incident_(graph.nodes.size()) {
     for (std::size_t e = 0; e < graph.edges.size(); ++e) {
       incident_[static_cast<std::size_t>(graph.edges[e].a)].push_back({static_cast<int>(e), 1});
@@ -150,6 +151,15 @@ class MinimaFinder {
         // Where the classic rule fires (both sides rise) the passage rule replaces its middle
         // cut only when both ends open wide.
         if (left && right && !(wide_left && wide_right)) wide_left = wide_right = false;
+        if (len >= passage_ && bulges_) {
+          const double need2 = std::max(need, m * (1.0 + passage_rise_));
+          if (wide_left)
+            bl = static_cast<std::size_t>(
+                past_bulges(v, static_cast<std::ptrdiff_t>(bl), -1, m, band, need2));
+          if (wide_right)
+            br = static_cast<std::size_t>(
+                past_bulges(v, static_cast<std::ptrdiff_t>(br), 1, m, band, need2));
+        }
         if (len >= passage_) {
           if (wide_left && bl > 0) out->push_back(ed.cells[bl]);
           if (wide_right && br + 1 < n) out->push_back(ed.cells[br]);
@@ -189,15 +199,37 @@ class MinimaFinder {
     const double m = lo;
     const double need =
         std::max(m + std::max(min_rise_, rise_ratio_ * m), m * (1.0 + passage_rise_));
+    if (bulges_) last = past_bulges(v, last, step, m, lo + 1.0, need);
     int visits = 0;
     if (rises(e, last + step, step, m, need, budget0, &visits))
       out->push_back(
           graph_.edges[static_cast<std::size_t>(e)].cells[static_cast<std::size_t>(last)]);
   }
 
+  // A passage's end, past its bulges: from cell `last` (the passage's last cell within its band
+  // [m, band]) walking in direction `step` until the clearance drops below m or reaches `need`
+  // (where the passage opens), the last cell back within the band. A bend or a short widening
+  // that narrows again to the passage's width before anything opens is part of the passage, so
+  // the cut goes at the narrowing where it really opens, not at the first bump (issue #15:
+  // lab_intel, a corridor whose L bend came before its door).
+  static std::ptrdiff_t past_bulges(const std::vector<double>& v, std::ptrdiff_t last, int step,
+                                    double m, double band, double need) {
+    const auto n = static_cast<std::ptrdiff_t>(v.size());
+    std::ptrdiff_t end = last;
+    for (std::ptrdiff_t q = last + step; q >= 0 && q < n; q += step) {
+      const double x = v[static_cast<std::size_t>(q)];
+      if (x < m || x >= need) break;
+      if (x <= band) end = q;
+    }
+    // The cut needs a cell beyond it on the edge (the rise test starts there).
+    if (end + step < 0 || end + step >= n) return last;
+    return end;
+  }
+
   const voronoi::VoronoiGraph& graph_;
   const GridMap<float>& clearance_;
   double min_rise_, rise_ratio_, walk_, passage_, passage_rise_;
+  bool bulges_;
   std::vector<std::vector<std::pair<int, int>>> incident_;  // node -> (edge, +1 from a / -1 from b)
 };
 

@@ -301,6 +301,8 @@ TEST(TopologicalMap, PassageOpeningIntoARoomIsCutAtItsMouth) {
   // wall line continues across the passage's mouth: the wall-opening rule, off here, cuts it.)
   TopologyOptions classic_options;
   classic_options.wall_openings.max_width = 0.0;
+  classic_options.passage_length = 0.0;
+  classic_options.validate_sides = false;
   const TopologicalMap classic = build_topological_map(g, classic_options);
   EXPECT_EQ(classic.regions.size(), 1U);
   TopologyOptions o = classic_options;
@@ -329,9 +331,12 @@ TEST(TopologicalMap, PassageOpeningIntoARoomIsCutAtItsMouth) {
 TEST(TopologicalMap, CorridorBetweenTwoRoomsIsItsOwnRegion) {
   const BinaryGrid g = room_with_open_passage(true);
   // Classic: one cut in the middle of the corridor, each half joins a room.
-  const TopologicalMap classic = build_topological_map(g);
+  TopologyOptions classic_options;
+  classic_options.passage_length = 0.0;
+  classic_options.validate_sides = false;
+  const TopologicalMap classic = build_topological_map(g, classic_options);
   EXPECT_EQ(classic.regions.size(), 2U);
-  TopologyOptions o;
+  TopologyOptions o = classic_options;
   o.passage_length = 1.0;
   const TopologicalMap m = build_topological_map(g, o);
   ASSERT_EQ(m.regions.size(), 3U);
@@ -359,6 +364,7 @@ TEST(TopologicalMap, RoomTestMergesPiecesOfOnePassage) {
   o.passage_length = 1.0;
   o.rise_ratio = 0.05;
   o.min_rise = 0.05;
+  o.passage_bulges = false;  // (the bulge rule alone also keeps the L whole: next test)
   o.validate_sides = true;
   const TopologicalMap m = build_topological_map(g, o);
   const int a = m.region_of(Cell{25, 25}), b = m.region_of(Cell{130, 140});
@@ -369,6 +375,35 @@ TEST(TopologicalMap, RoomTestMergesPiecesOfOnePassage) {
   o.validate_sides = false;
   const TopologicalMap split = build_topological_map(g, o);
   EXPECT_GT(split.regions.size(), m.regions.size());
+}
+
+TEST(TopologicalMap, DeadEndPassageIsCutWhereItOpensNotAtItsBend) {
+  // A 12-cell-wide passage opening into room A, bending north at a right angle and ending blind
+  // (issue #15, lab_intel: a narrow room whose L bend comes before its door). Along the diagram
+  // from the dead end the clearance stays at the passage's 6 cells, bulges at the bend (the
+  // corner square) and narrows back to 6 cells before room A opens. Without the bulge rule the
+  // passage's first rise, the bend, is taken for its opening and the L is cut in two there.
+  BinaryGrid g(GridGeometry{140, 120, 0.05, {}}, 1);
+  fill_rect(g, 1, 1, 50, 50, 0);       // room A
+  fill_rect(g, 51, 20, 130, 31, 0);    // passage east from A
+  fill_rect(g, 119, 32, 130, 110, 0);  // passage north, a dead end
+  TopologyOptions o;
+  o.wall_openings.max_width = 0.0;
+  o.validate_sides = false;  // the room test would mend the cut afterwards: the rule alone here
+  o.passage_bulges = true;
+  const TopologicalMap m = build_topological_map(g, o);
+  const int a = m.region_of(Cell{25, 25});
+  const int east = m.region_of(Cell{90, 25}), north = m.region_of(Cell{125, 100});
+  EXPECT_EQ(m.regions.size(), 2U);
+  EXPECT_NE(a, east);
+  EXPECT_EQ(east, north);
+  for (const auto& cp : m.critical_points) {
+    if (!cp.separates) continue;
+    EXPECT_NEAR(cp.cell.x, 51, 4) << cp.cell;  // at room A's mouth
+  }
+  o.passage_bulges = false;
+  const TopologicalMap cut = build_topological_map(g, o);
+  EXPECT_NE(cut.region_of(Cell{90, 25}), cut.region_of(Cell{125, 100}));
 }
 
 TEST(TopologicalMap, RoomTestKeepsTwoRoomsBehindAWideOpening) {
