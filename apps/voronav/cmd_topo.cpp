@@ -29,6 +29,7 @@ struct TopoArgs {
   std::string metric = "ipa";
   int free_from = 250;
   double min_region_area = 1.0;
+  double absorb_obstacles = topology::TopologyOptions{}.regions_absorb_obstacles;
   double max_rise_walk = topology::TopologyOptions{}.max_rise_walk;
   double passage_length = topology::TopologyOptions{}.passage_length;
   double passage_rise_ratio = topology::TopologyOptions{}.passage_rise_ratio;
@@ -60,6 +61,7 @@ void run(const TopoArgs& a) {
   opt.method = a.method == "ca" ? topology::DiagramMethod::kCellularAutomaton
                                 : topology::DiagramMethod::kEdt;
   opt.min_region_area = a.min_region_area;
+  opt.regions_absorb_obstacles = a.absorb_obstacles;
   opt.max_rise_walk = a.max_rise_walk;
   opt.passage_length = a.passage_length;
   opt.passage_rise_ratio = a.passage_rise_ratio;
@@ -105,12 +107,14 @@ void run(const TopoArgs& a) {
   }
   j["critical_points"] = cps;
   j["regions"] = m.regions.size();
+  j["absorbed_obstacles"] = m.absorbed_obstacles;
   nlohmann::json nodes = nlohmann::json::array(), edges = nlohmann::json::array();
   const auto outlines = topology::region_outlines(m.region, static_cast<int>(m.regions.size()));
   for (const auto& r : m.regions) {
     nodes.push_back({{"id", r.id},
                      {"label", r.id + 1},
                      {"cells", r.cells},
+                     {"absorbed_cells", r.absorbed_cells},
                      {"cell", {r.centre.x, r.centre.y}},
                      {"world", {r.centre_world.x, r.centre_world.y}},
                      {"area_m2", r.area_m2}});
@@ -211,6 +215,11 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--min-region-area", args->min_region_area,
                   "Regions smaller than this [m^2] are merged into a neighbour")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--regions-absorb-obstacles", args->absorb_obstacles,
+                  "An obstacle piece up to this area [m^2] enclosed by one region (furniture, a "
+                  "pillar) joins it in the labels, polygons and areas (0 = off)")
       ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--max-rise-walk", args->max_rise_walk,

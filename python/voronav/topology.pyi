@@ -35,6 +35,7 @@ class TopologyOptions:
     validate_sides: bool
     room_test_elongation: float
     min_region_area: float  # [m^2]
+    regions_absorb_obstacles: float  # [m^2], 0 = off
     wall_openings: WallOpeningOptions
     wall_openings_first: bool
     def __init__(self, **kwargs: object) -> None: ...
@@ -51,6 +52,7 @@ class CriticalPoint:
 class Region:
     id: int
     cells: int
+    absorbed_cells: int
     area_m2: float
     centre: Tuple[int, int]
     centre_world: Vec2

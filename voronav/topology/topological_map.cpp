@@ -30,6 +30,7 @@ void check_options(const TopologyOptions& o) {
   nonneg("TopologyOptions.min_wall_area", o.min_wall_area);
   nonneg("TopologyOptions.passage_rise_ratio", o.passage_rise_ratio);
   nonneg("TopologyOptions.room_test_elongation", o.room_test_elongation);
+  nonneg("TopologyOptions.regions_absorb_obstacles", o.regions_absorb_obstacles);
   check_wall_opening_options(o.wall_openings);
 }
 
@@ -248,12 +249,59 @@ struct UnionFind {
   }
 };
 
+// Obstacle components (8-connected blocked cells) of at most max_cells cells, off the map's
+// border, whose every neighbouring free cell lies in one and the same region, join that region
+// (a table or a pillar inside a room: the room without a hole). A component next to two regions
+// (a wall between rooms) or next to free cells of no region stays out. Returns how many joined.
+std::size_t absorb_enclosed_obstacles(const BinaryGrid& blocked, double max_cells,
+                                      GridMap<std::int32_t>* region) {
+  const GridGeometry& geo = blocked.geometry();
+  std::vector<char> seen(blocked.size(), 0);
+  std::vector<Cell> comp, stack;
+  std::size_t joined = 0;
+  for (std::size_t i = 0; i < blocked.size(); ++i) {
+    if (!blocked[i] || seen[i]) continue;
+    comp.clear();
+    seen[i] = 1;
+    stack.push_back(geo.cell_at(i));
+    int owner = -1;
+    bool enclosed = true;
+    while (!stack.empty()) {
+      const Cell c = stack.back();
+      stack.pop_back();
+      comp.push_back(c);
+      for (int k = 0; k < 8; ++k) {
+        const Cell q = c + kNeighbours8[k];
+        if (!geo.contains(q)) {
+          enclosed = false;  // touches the map's border: not inside a room
+          continue;
+        }
+        if (blocked[q]) {
+          if (!seen[geo.index(q)]) {
+            seen[geo.index(q)] = 1;
+            stack.push_back(q);
+          }
+          continue;
+        }
+        const int r = (*region)[q];
+        if (r < 0 || (owner >= 0 && r != owner)) enclosed = false;
+        if (owner < 0) owner = r;
+      }
+    }
+    if (!enclosed || owner < 0 || static_cast<double>(comp.size()) > max_cells) continue;
+    for (const Cell c : comp)
+      (*region)[c] = owner;
+    ++joined;
+  }
+  return joined;
+}
+
 TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid& diagram,
                           const TopologyOptions& o) {
   const GridGeometry& geo = g.geometry;
   const double res = geo.resolution;
   TopologicalMap out{geo, g.blocked, diagram, g.clearance, {}, GridMap<std::int32_t>(geo, -1),
-                     {},  {}};
+                     {},  {},        0};
   if (geo.empty()) return out;
 
   // 1. Critical points along the Voronoi graph's edges.
@@ -565,7 +613,13 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     }
     nregions = n2;
   }
-  // 5. Region statistics and centres.
+  // 4c. Obstacles enclosed by one region (furniture, pillars) join it (regions_absorb_obstacles).
+  std::size_t absorbed_components = 0;
+  if (o.regions_absorb_obstacles > 0.0)
+    absorbed_components =
+        absorb_enclosed_obstacles(g.blocked, o.regions_absorb_obstacles / (res * res), &out.region);
+  out.absorbed_obstacles = absorbed_components;
+  // 5. Region statistics and centres (the centre: a free cell).
   out.regions.resize(static_cast<std::size_t>(nregions));
   std::vector<double> sx(static_cast<std::size_t>(nregions), 0.0), sy(sx);
   for (std::size_t i = 0; i < comp.size(); ++i) {
@@ -575,13 +629,14 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     auto& reg = out.regions[static_cast<std::size_t>(r)];
     reg.id = r;
     reg.cells++;
+    if (g.blocked[i]) reg.absorbed_cells++;
     sx[static_cast<std::size_t>(r)] += c.x;
     sy[static_cast<std::size_t>(r)] += c.y;
   }
   std::vector<double> best(static_cast<std::size_t>(nregions), HUGE_VAL);
   for (std::size_t i = 0; i < comp.size(); ++i) {
     const int r = out.region[i];
-    if (r < 0) continue;
+    if (r < 0 || g.blocked[i]) continue;
     const auto ru = static_cast<std::size_t>(r);
     const Cell c = geo.cell_at(i);
     const double n = static_cast<double>(out.regions[ru].cells);

@@ -91,6 +91,11 @@ struct TopologyOptions {
   double room_test_elongation = 2.5;
   /// Regions smaller than this [m^2] are merged into a neighbour (see the file comment).
   double min_region_area = 1.0;
+  /// An obstacle piece (8-connected) of at most this area [m^2], off the map's border, whose
+  /// neighbouring free cells all lie in one region joins that region in `region` (the label
+  /// image, the polygons, the areas): rooms without holes for tables and pillars. A piece next
+  /// to two regions (a wall between rooms) never joins. 0 = off.
+  double regions_absorb_obstacles = 2.0;
   /// Openings in wall lines (wall_openings.hpp): a gap of door width between two collinear wall
   /// faces is closed by a critical line too, unless a critical line already crosses it; off
   /// while wall_openings.max_width is 0.
@@ -112,9 +117,10 @@ struct CriticalPoint {
 
 struct Region {
   int id = 0;
-  std::size_t cells = 0;
+  std::size_t cells = 0;           ///< free cells + absorbed obstacle cells
+  std::size_t absorbed_cells = 0;  ///< obstacle cells joined (regions_absorb_obstacles)
   double area_m2 = 0.0;
-  Cell centre;        ///< region cell nearest the centroid
+  Cell centre;        ///< free region cell nearest the centroid
   Vec2 centre_world;  ///< its world position [m]
 };
 
@@ -131,12 +137,17 @@ struct TopologicalMap {
   BinaryGrid diagram;        ///< the Voronoi diagram used (thinned, pruned)
   GridMap<float> clearance;  ///< [cells]
   std::vector<CriticalPoint> critical_points;
-  GridMap<std::int32_t> region;  ///< region id per free cell, -1 on obstacles
+  /// Region id per free cell, -1 on obstacles (on an absorbed obstacle piece: its region, see
+  /// TopologyOptions::regions_absorb_obstacles).
+  GridMap<std::int32_t> region;
   std::vector<Region> regions;
   std::vector<TopoEdge> edges;
+  std::size_t absorbed_obstacles = 0;  ///< obstacle pieces joined to a region
 
-  /// The region of a cell, -1 for blocked or outside cells.
-  [[nodiscard]] int region_of(Cell c) const { return geometry.contains(c) ? region[c] : -1; }
+  /// The region of a free cell, -1 for blocked (also absorbed) or outside cells.
+  [[nodiscard]] int region_of(Cell c) const {
+    return geometry.contains(c) && blocked[c] == 0 ? region[c] : -1;
+  }
 };
 
 /// Builds the diagram with options.method, then the topological map. Throws voronav::Error for
