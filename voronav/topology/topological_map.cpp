@@ -11,25 +11,22 @@
 
 #include "voronav/core/cell_iterators.hpp"
 #include "voronav/core/error.hpp"
+#include "voronav/core/require.hpp"
 #include "voronav/voronoi/voronoi_graph.hpp"
 
 namespace voronav::topology {
 namespace {
 
 void check_options(const TopologyOptions& o) {
-  auto nonneg = [](const char* name, double v) {
-    if (!(v >= 0.0) || !std::isfinite(v))
-      throw Error(name, 0, "expected a finite number >= 0, got " + std::to_string(v));
-  };
-  nonneg("TopologyOptions.min_rise", o.min_rise);
-  nonneg("TopologyOptions.rise_ratio", o.rise_ratio);
-  nonneg("TopologyOptions.max_door_width", o.max_door_width);
-  nonneg("TopologyOptions.min_region_area", o.min_region_area);
-  nonneg("TopologyOptions.max_rise_walk", o.max_rise_walk);
-  nonneg("TopologyOptions.passage_length", o.passage_length);
-  nonneg("TopologyOptions.min_wall_area", o.min_wall_area);
-  nonneg("TopologyOptions.passage_rise_ratio", o.passage_rise_ratio);
-  nonneg("TopologyOptions.room_test_elongation", o.room_test_elongation);
+  require_finite_nonneg("TopologyOptions.min_rise", o.min_rise);
+  require_finite_nonneg("TopologyOptions.rise_ratio", o.rise_ratio);
+  require_finite_nonneg("TopologyOptions.max_door_width", o.max_door_width);
+  require_finite_nonneg("TopologyOptions.min_region_area", o.min_region_area);
+  require_finite_nonneg("TopologyOptions.max_rise_walk", o.max_rise_walk);
+  require_finite_nonneg("TopologyOptions.passage_length", o.passage_length);
+  require_finite_nonneg("TopologyOptions.min_wall_area", o.min_wall_area);
+  require_finite_nonneg("TopologyOptions.passage_rise_ratio", o.passage_rise_ratio);
+  require_finite_nonneg("TopologyOptions.room_test_elongation", o.room_test_elongation);
   check_wall_opening_options(o.wall_openings);
 }
 
