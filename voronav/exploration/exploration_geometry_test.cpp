@@ -275,6 +275,32 @@ TEST(VoronoiTree, BlockedSegmentsUseThePlanner) {
   EXPECT_TRUE(strict.leaves_by_distance().empty());
 }
 
+TEST(VoronoiTree, RootInTheLargestPartWhenTheNearestVertexIsCutOff) {
+  // Paper world seed 15 (issue 14): the vertex nearest the start had no usable edge, so six trees
+  // in a row were its root alone, without a leaf. Here a wall ring around the vertex nearest the
+  // start cuts it off; the rest of the graph stays connected.
+  const Vec2 pts[] = {{0.0, 0.0}, {3.1, 0.2}, {6.0, -0.1}, {0.2, 3.0},  {3.0, 3.3},
+                      {6.2, 2.9}, {1.6, 1.3}, {4.4, 1.7},  {0.6, -2.3}, {4.8, -1.6}};
+  const PointVoronoi v = voronoi_of_points(pts);
+  const Vec2 start{1.5, -0.2};
+  std::size_t v0 = 0;
+  for (std::size_t i = 1; i < v.vertices.size(); ++i)
+    if (distance(v.vertices[i], start) < distance(v.vertices[v0], start)) v0 = i;
+  BinaryGrid world(GridGeometry{200, 200, 0.05, {{-2.5, -4.0}, 0.0}}, 0);
+  for (std::size_t k = 0; k < world.size(); ++k) {
+    const double d = distance(world.geometry().cell_center(world.cell_at(k)), v.vertices[v0]);
+    if (d > 0.2 && d < 0.35) world[k] = 1;
+  }
+  ASSERT_FALSE(world[*world.geometry().world_to_cell(v.vertices[v0])]);
+  const VoronoiTree cut = build_voronoi_tree(v, world, start, {.root_in_largest_component = false});
+  EXPECT_EQ(cut.nodes.size(), 1u);  // the old rule: the cut-off vertex alone
+  EXPECT_TRUE(cut.leaves_by_distance().empty());
+  const VoronoiTree t = build_voronoi_tree(v, world, start);
+  EXPECT_GT(t.nodes.size(), 4u);
+  EXPECT_GE(t.leaves_by_distance().size(), 2u);
+  EXPECT_GT(distance(t.nodes[static_cast<std::size_t>(t.root)].position, v.vertices[v0]), 0.4);
+}
+
 TEST(Dispatch, LeavesByDistanceAsFigure9) {
   const BinaryGrid world(GridGeometry{200, 200, 0.05, {}}, 0);
   const VoronoiTree t = random_tree(5, world, {1.0, 1.0});

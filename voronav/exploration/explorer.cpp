@@ -253,12 +253,32 @@ OccupancyGrid resample_world(const OccupancyGrid& in, double min_cell) {
   return out;
 }
 
+// The world ends at the map's edge for the laser as for the body: the outermost ring of cells
+// becomes a wall. The footprint check (robot::disc_collides) already refuses cells outside the
+// map, but laser rays pass out of it unhit, so on a map whose free space runs to its edge a robot
+// saw open space ahead, drove at the edge, was refused every step and stood there (issue 14:
+// lab_intel seed 3, 8 robots tree and 2 robots coordinated, stalled at the edge).
+namespace {
+BinaryGrid closed_at_edge(BinaryGrid b) {
+  const int w = b.geometry().width, h = b.geometry().height;
+  for (int x = 0; x < w; ++x) {
+    b[Cell{x, 0}] = 1;
+    b[Cell{x, h - 1}] = 1;
+  }
+  for (int y = 0; y < h; ++y) {
+    b[Cell{0, y}] = 1;
+    b[Cell{w - 1, y}] = 1;
+  }
+  return b;
+}
+}  // namespace
+
 ExplorationResult run_exploration(const OccupancyGrid& world_in, const ExplorationOptions& o) {
   o.validate();
   if (world_in.empty()) throw Error("run_exploration", 0, "the world map is empty");
   const OccupancyGrid world = resample_world(world_in, o.min_cell_size);
   const GridGeometry& g = world.geometry();
-  const BinaryGrid blocked = binarize(world, {50, true});
+  const BinaryGrid blocked = closed_at_edge(binarize(world, {50, true}));
   const double body = o.drive.body_radius;
 
   // --- start positions ---

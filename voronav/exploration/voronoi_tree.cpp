@@ -162,11 +162,35 @@ VoronoiTree build_voronoi_tree(const PointVoronoi& voronoi, const BinaryGrid& tr
     adj[b].push_back({a, cost, std::move(rev)});
   }
 
-  // Root: the kept vertex nearest the start.
+  // Connected parts of the clipped graph (kept vertices joined by checked paths).
+  std::vector<std::size_t> part(nv, nv), part_size;
+  for (std::size_t s = 0; s < nv; ++s) {
+    if (!kept[s] || part[s] != nv) continue;
+    const std::size_t id = part_size.size();
+    part_size.push_back(0);
+    std::vector<std::size_t> stack{s};
+    part[s] = id;
+    while (!stack.empty()) {
+      const std::size_t u = stack.back();
+      stack.pop_back();
+      ++part_size[id];
+      for (const Arc& arc : adj[u])
+        if (part[arc.to] == nv) {
+          part[arc.to] = id;
+          stack.push_back(arc.to);
+        }
+    }
+  }
+  const std::size_t largest =
+      part_size.empty() ? 0 : *std::max_element(part_size.begin(), part_size.end());
+
+  // Root: the kept vertex nearest the start (within the largest part: an isolated vertex near
+  // the start, cut off by known obstacles, gives a tree without leaves).
   std::size_t root = nv;
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < nv; ++i) {
     if (!kept[i]) continue;
+    if (options.root_in_largest_component && part_size[part[i]] != largest) continue;
     const double d = distance(voronoi.vertices[i], start);
     if (d < best) {
       best = d;
