@@ -138,8 +138,10 @@ struct NetSimOptions {
   /// also carries every cell its sender knows occupied inside the free disc of a point of the
   /// route ahead: the part of the change the route's makers saw free. The cells beside the broken
   /// move alone let an answerer offer a detour a little to the side, through the same closed
-  /// door, which the source then refused (s2r9, s2r13).
-  bool repair_share_changed = true;
+  /// door, which the source then refused (s2r9, s2r13). Off by default: with it the source takes
+  /// those answers in s2r9 and s2r13 but meets the change again at once, s2r13 no longer arrives
+  /// and s4r10 sends 128.9 kB instead of 56.5 kB (docs/reproductions/networked.md, stop 18).
+  bool repair_share_changed = false;
   /// Decentralized, not in the paper: the source re-sends its Repair (repair_resend_s) only when
   /// a robot is in radio range that was not at any earlier send: a robot that had it ignores it
   /// (Table 4 line 1), so a re-send to the same neighbours only adds traffic (s4r6: 36 of 43
