@@ -51,6 +51,7 @@ struct CoordArgs {
   int ga_population = 0;
   int ga_stall = 0;
   int ga_delayed_gate = 0;
+  int ga_polish = 0;
   double node_spacing = -1.0;
   bool no_reduction = false;
   bool json = false;
@@ -363,6 +364,7 @@ void run(const CoordArgs& a) {
   opt.search.ga.population = a.ga_population;
   opt.search.ga.stall_generations = a.ga_stall;
   opt.search.ga.delayed_gate = a.ga_delayed_gate;
+  opt.search.ga.polish_sweeps = a.ga_polish;
   opt.search.edf_reduction = !a.no_reduction;
   const co::CoordinationResult r = co::coordinate(agents, opt);
 
@@ -412,6 +414,9 @@ void run(const CoordArgs& a) {
       {"three_opt_local_optima", r.search.three_opt_local_optima},
       {"three_opt_exact_cuts", r.search.three_opt_exact_cuts},
       {"three_opt_delayed_improvements", r.search.three_opt_delayed_improvements},
+      {"ga_polish_improvements", r.search.polish_improvements},
+      {"ga_polish_sweeps", r.search.polish_sweeps},
+      {"ga_makespan_before_polish", r.search.makespan_before_polish},
       {"at_start", co::to_string(opt.map.at_start)},
       {"at_goal", co::to_string(opt.map.at_goal)},
       {"agents", js_agents},
@@ -541,6 +546,11 @@ void setup(CLI::App& app) {
   cmd->add_option("--ga-delayed-gate", a->ga_delayed_gate,
                   "GA, critical-delayed: 0 = sweeps on every child; K > 0 = only on children "
                   "that critical-first makes no worse than the K-th best of the population")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--ga-polish", a->ga_polish,
+                  "GA: after the GA, at most this many sweeps of the paper's N(N-1) segment moves "
+                  "on the best order only, until a sweep improves nothing (0 = none, the paper's)")
       ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--ga-population", a->ga_population, "GA: population size (0 = N, the paper's)")

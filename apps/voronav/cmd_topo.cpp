@@ -29,9 +29,11 @@ struct TopoArgs {
   std::string metric = "ipa";
   int free_from = 250;
   double min_region_area = 1.0;
+  double absorb_obstacles = topology::TopologyOptions{}.regions_absorb_obstacles;
   double max_rise_walk = topology::TopologyOptions{}.max_rise_walk;
   double passage_length = topology::TopologyOptions{}.passage_length;
   double passage_rise_ratio = topology::TopologyOptions{}.passage_rise_ratio;
+  bool passage_bulges = topology::TopologyOptions{}.passage_bulges;
   bool validate_sides = topology::TopologyOptions{}.validate_sides;
   double room_test_elongation = topology::TopologyOptions{}.room_test_elongation;
   double min_wall_area = topology::TopologyOptions{}.min_wall_area;
@@ -59,9 +61,11 @@ void run(const TopoArgs& a) {
   opt.method = a.method == "ca" ? topology::DiagramMethod::kCellularAutomaton
                                 : topology::DiagramMethod::kEdt;
   opt.min_region_area = a.min_region_area;
+  opt.regions_absorb_obstacles = a.absorb_obstacles;
   opt.max_rise_walk = a.max_rise_walk;
   opt.passage_length = a.passage_length;
   opt.passage_rise_ratio = a.passage_rise_ratio;
+  opt.passage_bulges = a.passage_bulges;
   opt.validate_sides = a.validate_sides;
   opt.room_test_elongation = a.room_test_elongation;
   opt.min_wall_area = a.min_wall_area;
@@ -103,12 +107,14 @@ void run(const TopoArgs& a) {
   }
   j["critical_points"] = cps;
   j["regions"] = m.regions.size();
+  j["absorbed_obstacles"] = m.absorbed_obstacles;
   nlohmann::json nodes = nlohmann::json::array(), edges = nlohmann::json::array();
   const auto outlines = topology::region_outlines(m.region, static_cast<int>(m.regions.size()));
   for (const auto& r : m.regions) {
     nodes.push_back({{"id", r.id},
                      {"label", r.id + 1},
                      {"cells", r.cells},
+                     {"absorbed_cells", r.absorbed_cells},
                      {"cell", {r.centre.x, r.centre.y}},
                      {"world", {r.centre_world.x, r.centre_world.y}},
                      {"area_m2", r.area_m2}});
@@ -211,6 +217,11 @@ void setup(CLI::App& app) {
                   "Regions smaller than this [m^2] are merged into a neighbour")
       ->check(non_negative())
       ->capture_default_str();
+  cmd->add_option("--regions-absorb-obstacles", args->absorb_obstacles,
+                  "An obstacle piece up to this area [m^2] enclosed by one region (furniture, a "
+                  "pillar) joins it in the labels, polygons and areas (0 = off)")
+      ->check(non_negative())
+      ->capture_default_str();
   cmd->add_option("--max-rise-walk", args->max_rise_walk,
                   "Critical points: the clearance rise is sought up to this far [m] along the "
                   "diagram, across junctions (0 = only on the point's own edge)")
@@ -225,6 +236,10 @@ void setup(CLI::App& app) {
                   "A passage end is cut only where the clearance beyond it reaches (1 + this) x "
                   "the passage's")
       ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--passage-bulges", args->passage_bulges,
+                  "A passage goes on through a bend or widening that narrows again before it "
+                  "opens, and is cut at that last narrowing (true/false)")
       ->capture_default_str();
   cmd->add_option("--validate-sides", args->validate_sides,
                   "Room test: drop a critical line when a region it separates is no wider than "

@@ -256,6 +256,7 @@ void bind_field(py::module_& m) {
       .def_readwrite("passage_length", &topology::TopologyOptions::passage_length,
                      "[m], 0 = off; a passage is cut at its ends where the clearance rises")
       .def_readwrite("passage_rise_ratio", &topology::TopologyOptions::passage_rise_ratio)
+      .def_readwrite("passage_bulges", &topology::TopologyOptions::passage_bulges)
       .def_readwrite("min_wall_area", &topology::TopologyOptions::min_wall_area,
                      "[m^2], 0 = off; no critical point on smaller obstacle pieces")
       .def_readwrite("validate_sides", &topology::TopologyOptions::validate_sides,
@@ -263,6 +264,9 @@ void bind_field(py::module_& m) {
       .def_readwrite("room_test_elongation", &topology::TopologyOptions::room_test_elongation,
                      "the room test joins only when one side is at least this elongated")
       .def_readwrite("min_region_area", &topology::TopologyOptions::min_region_area, "[m^2]")
+      .def_readwrite("regions_absorb_obstacles",
+                     &topology::TopologyOptions::regions_absorb_obstacles,
+                     "[m^2], 0 = off; enclosed obstacle pieces up to this join their region")
       .def_readwrite("wall_openings", &topology::TopologyOptions::wall_openings,
                      "openings in wall lines closed by critical lines")
       .def_readwrite("wall_openings_first", &topology::TopologyOptions::wall_openings_first);
@@ -289,6 +293,7 @@ void bind_field(py::module_& m) {
   py::class_<topology::Region>(tp, "Region")
       .def_readonly("id", &topology::Region::id)
       .def_readonly("cells", &topology::Region::cells)
+      .def_readonly("absorbed_cells", &topology::Region::absorbed_cells)
       .def_readonly("area_m2", &topology::Region::area_m2, "[m^2]")
       .def_property_readonly("centre",
                              [](const topology::Region& r) { return cell_tuple(r.centre); })

@@ -46,8 +46,11 @@ def test_critical_line_options_equal_cli(data, cli):
               "--passage-rise-ratio", "0.5", "--validate-sides", "true", "--room-test-elongation", "2")
     assert len(topo.regions) == out["regions"]
     assert len(topo.critical_points) == len(out["critical_points"])
-    default = vn.topology.build_topological_map(blocked)
-    assert len(default.critical_points) != len(topo.critical_points)
+    classic = vn.topology.build_topological_map(
+        blocked, vn.topology.TopologyOptions(passage_length=0.0, validate_sides=False))
+    assert len(classic.critical_points) != len(topo.critical_points)
+    assert vn.topology.TopologyOptions().passage_bulges  # on by default, settable
+    assert not vn.topology.TopologyOptions(passage_bulges=False).passage_bulges
 
 
 def test_wall_openings_equal_cli(data, cli):

@@ -30,10 +30,12 @@ class TopologyOptions:
     max_rise_walk: float  # [m]
     passage_length: float  # [m]
     passage_rise_ratio: float
+    passage_bulges: bool
     min_wall_area: float  # [m^2]
     validate_sides: bool
     room_test_elongation: float
     min_region_area: float  # [m^2]
+    regions_absorb_obstacles: float  # [m^2], 0 = off
     wall_openings: WallOpeningOptions
     wall_openings_first: bool
     def __init__(self, **kwargs: object) -> None: ...
@@ -50,6 +52,7 @@ class CriticalPoint:
 class Region:
     id: int
     cells: int
+    absorbed_cells: int
     area_m2: float
     centre: Tuple[int, int]
     centre_world: Vec2

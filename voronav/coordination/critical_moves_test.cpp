@@ -327,6 +327,57 @@ TEST(CriticalMoves, GaStallRuleStopsAfterGenerationsWithoutImprovement) {
   EXPECT_THROW((void)search_priority(net, so), Error);
 }
 
+// The final polish (GaOptions::polish_sweeps): the returned order is a local optimum of every
+// single-robot segment move (checked by brute force), never worse than the GA's best, the same for
+// the same seed and any thread count; without the polish a GA without 3-opt leaves improving moves.
+TEST(CriticalMoves, GaPolishEndsAtALocalOptimumOfThePapersMoves) {
+  auto improving_moves = [](const MdNetwork& net, const std::vector<int>& order) {
+    const Resolution base = resolve(net, order);
+    const int n = static_cast<int>(order.size());
+    int count = 0;
+    std::vector<int> cand;
+    int from = 0, to = 0;
+    for (int p = 0; p < n; ++p) {
+      for (int k = 0; k < n; ++k) {
+        if (k == p) continue;
+        internal::apply_segment_move(order, internal::SegmentMove{p, p, k}, cand, from, to);
+        count += better(resolve(net, cand), base) ? 1 : 0;
+      }
+    }
+    return count;
+  };
+  int unpolished_with_moves = 0;
+  std::size_t taken = 0;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const MdNetwork net = random_network(16, 48, seed);
+    SearchOptions so;
+    so.edf_reduction = false;
+    so.ga.seed = seed;
+    so.ga.three_opt_iterations = -1;  // no 3-opt: the GA alone rarely ends at a local optimum
+    so.ga.threads = 1;
+    const auto plain = search_priority(net, so);
+    unpolished_with_moves += improving_moves(net, plain.order) > 0 ? 1 : 0;
+    EXPECT_EQ(plain.polish_sweeps, 0);
+    so.ga.polish_sweeps = 50;
+    const auto a = search_priority(net, so);
+    so.ga.threads = 2;
+    const auto b = search_priority(net, so);
+    EXPECT_EQ(a.order, b.order);
+    EXPECT_EQ(a.evaluations, b.evaluations);
+    EXPECT_EQ(a.makespan_before_polish, plain.resolution.makespan);
+    EXPECT_FALSE(better(plain.resolution, a.resolution)) << seed;
+    EXPECT_EQ(resolve(net, a.order).makespan, a.resolution.makespan);
+    EXPECT_EQ(improving_moves(net, a.order), 0) << seed;
+    EXPECT_LT(a.polish_sweeps, 50);  // stopped by a sweep that took no move
+    taken += a.polish_improvements;
+  }
+  EXPECT_GE(unpolished_with_moves, 2);
+  EXPECT_GT(taken, 0U);
+  GaOptions bad;
+  bad.polish_sweeps = -1;
+  EXPECT_THROW((void)genetic_search(random_network(5, 10, 1), {0, 1, 2, 3, 4}, {}, {}, bad), Error);
+}
+
 // A worker's exception is rethrown on the caller's thread (never std::terminate): the lowest
 // item that threw wins, for every thread count, and every thread was joined.
 TEST(CriticalMoves, StridedThreadsRethrowAWorkersExceptionOnTheCaller) {

@@ -459,6 +459,31 @@ class Ga {
     return false;
   }
 
+  /// GaOptions::polish_sweeps: sweeps over every single-robot segment move (robot at position p
+  /// to position k != p of the rest; the paper's N (N - 1) moves, in a fixed order, no RNG), first
+  /// improvement, the sweep going on from the next move with the new order; stops after a sweep
+  /// that took no move or after polish_sweeps sweeps.
+  void polish(Individual& ind, SearchResult& out) {
+    std::vector<int> cand, base_order, cand_order;
+    full_order(ind.seq, base_order);
+    int from = 0, to = 0;
+    for (int sweep = 0; sweep < o_.polish_sweeps; ++sweep) {
+      ++out.polish_sweeps;
+      bool any = false;
+      for (int p = 0; p < n_; ++p) {
+        for (int k = 0; k < n_; ++k) {
+          if (k == p) continue;
+          internal::apply_segment_move(ind.seq, internal::SegmentMove{p, p, k}, cand, from, to);
+          if (try_move(ind, cand, base_order, cand_order, from, to)) {
+            ++out.polish_improvements;
+            any = true;
+          }
+        }
+      }
+      if (!any) break;
+    }
+  }
+
   /// The resolution a child must match for the delayed sweeps (GaOptions::delayed_gate): the
   /// gate-th best of the population the parents come from; nullptr = no gate.
   const Resolution* gate_of(const std::vector<Individual>& pop, int pop_size) const {
@@ -641,7 +666,13 @@ class Ga {
         }
       }
     }
-    const Individual& best = pop.front();
+    Individual& best = pop.front();
+    out.makespan_before_polish = best.res.makespan;
+    if (o_.polish_sweeps > 0 && n_ >= 2) {
+      const std::size_t ga_improvements = improvements_;  // the polish counts its own moves
+      polish(best, out);
+      improvements_ = ga_improvements;
+    }
     for (const int l : best.seq)
       out.order.push_back(searched_[static_cast<std::size_t>(l)]);
     out.order.insert(out.order.end(), suffix_.begin(), suffix_.end());
@@ -692,6 +723,7 @@ void check_ga_options(const GaOptions& o) {
   if (o.max_rounds < 1) bad("max_rounds", "expected >= 1");
   if (o.stall_generations < 0) bad("stall_generations", "expected >= 0");
   if (o.delayed_gate < 0) bad("delayed_gate", "expected >= 0");
+  if (o.polish_sweeps < 0) bad("polish_sweeps", "expected >= 0");
   if (o.three_opt_depth < 0) bad("three_opt_depth", "expected >= 0");
   if (o.three_opt_patience < 0) bad("three_opt_patience", "expected >= 0");
   if (o.threads < 0 || o.threads > 64) bad("threads", "expected 0..64");

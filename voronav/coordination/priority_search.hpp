@@ -114,6 +114,11 @@ struct GaOptions {
   /// than the k-th best order of the population its parents come from (the sweeps cost ~6x the
   /// critical moves; this spends them on the children that can enter the top).
   int delayed_gate = 0;
+  /// After the GA: the paper's 3-opt neighbourhood applied exhaustively to the best order only
+  /// (every robot moved to every other position, N (N - 1) moves per sweep, each taken when
+  /// (makespan, sum of arrivals) improves; sweeps repeat until one takes no move or this many
+  /// sweeps ran). 0 = none (the paper's GA).
+  int polish_sweeps = 0;
   /// 0: one RNG stream for the whole GA (the results of earlier versions). >= 1: each child of a
   /// generation (crossover, mutation, 3-opt) draws from its own stream, seeded from the main one,
   /// and the children are made on this many threads; the result is the same for every value >= 1.
@@ -143,6 +148,11 @@ struct SearchResult {
   std::size_t three_opt_exact_cuts = 0;    ///< random moves skipped: they cannot lower the makespan
   /// Of three_opt_improvements, the moves taken by the delayed-robot sweep (kCriticalDelayed).
   std::size_t three_opt_delayed_improvements = 0;
+  /// GaOptions::polish_sweeps: moves the final polish took, sweeps it ran, and the makespan of
+  /// the GA's best order before the polish.
+  std::size_t polish_improvements = 0;
+  int polish_sweeps = 0;
+  double makespan_before_polish = 0.0;
 };
 
 /// True when (makespan, sum_of_arrivals) of a is better than b (with a 1e-9 tolerance).

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <set>
@@ -10,6 +11,7 @@
 #include "voronav/core/grid_map.hpp"
 #include "voronav/core/occupancy.hpp"
 #include "voronav/core/pose2.hpp"
+#include "voronav/core/require.hpp"
 
 namespace voronav {
 namespace {
@@ -107,8 +109,7 @@ TEST(LineCells, EndpointsAndConnectivity) {
       EXPECT_LE(std::abs(cells[k].y - cells[k - 1].y), 1);
     }
   }
-  EXPECT_EQ(line_cells({0, 0}, {3, 1}),
-            (std::vector<Cell>{{0, 0}, {1, 0}, {2, 1}, {3, 1}}));
+  EXPECT_EQ(line_cells({0, 0}, {3, 1}), (std::vector<Cell>{{0, 0}, {1, 0}, {2, 1}, {3, 1}}));
 }
 
 TEST(LineCells, VisitorCanStopEarly) {
@@ -134,3 +135,19 @@ TEST(DiscCells, MatchesBruteForce) {
 
 }  // namespace
 }  // namespace voronav
+
+TEST(Error, OptionChecksNameTheOptionAndRefuseNanAndInfinity) {
+  EXPECT_NO_THROW(voronav::require_finite_nonneg("o.a", 0.0));
+  EXPECT_NO_THROW(voronav::require_finite_positive("o.a", 1e-9));
+  for (double bad : {-1e-12, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    try {
+      voronav::require_finite_nonneg("o.a", bad);
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const voronav::Error& e) {
+      EXPECT_EQ(e.source(), "o.a");
+      EXPECT_NE(e.reason().find("expected a finite number >= 0"), std::string::npos);
+    }
+  }
+  for (double bad : {0.0, -2.0, std::nan(""), -std::numeric_limits<double>::infinity()})
+    EXPECT_THROW(voronav::require_finite_positive("o.b", bad), voronav::Error) << bad;
+}

@@ -5,14 +5,13 @@
 #include <string>
 
 #include "voronav/core/error.hpp"
+#include "voronav/core/require.hpp"
 
 namespace voronav::network {
 
 void RadioOptions::validate() const {
   auto nonneg = [](double v, const char* name) {
-    if (!(v >= 0.0) || !std::isfinite(v))
-      throw Error(std::string("radio.") + name, 0,
-                  "expected a finite number >= 0, got " + std::to_string(v));
+    require_finite_nonneg(std::string("radio.") + name, v);
   };
   auto prob = [](double v, const char* name) {
     if (!(v >= 0.0 && v <= 1.0))

@@ -6,20 +6,17 @@
 #include <string>
 
 #include "voronav/core/error.hpp"
+#include "voronav/core/require.hpp"
 
 namespace voronav::robot {
 namespace {
 
 void require_positive(double value, const char* name) {
-  if (!(value > 0.0) || !std::isfinite(value))
-    throw Error(std::string("DiffDriveOptions.") + name, 0,
-                "expected a positive finite number, got " + std::to_string(value));
+  require_finite_positive(std::string("DiffDriveOptions.") + name, value);
 }
 
 void require_non_negative(double value, const char* name) {
-  if (!(value >= 0.0) || !std::isfinite(value))
-    throw Error(std::string("DiffDriveOptions.") + name, 0,
-                "expected a finite number >= 0, got " + std::to_string(value));
+  require_finite_nonneg(std::string("DiffDriveOptions.") + name, value);
 }
 
 double clamp_finite(double value, double limit) {

@@ -11,25 +11,23 @@
 
 #include "voronav/core/cell_iterators.hpp"
 #include "voronav/core/error.hpp"
+#include "voronav/core/require.hpp"
 #include "voronav/voronoi/voronoi_graph.hpp"
 
 namespace voronav::topology {
 namespace {
 
 void check_options(const TopologyOptions& o) {
-  auto nonneg = [](const char* name, double v) {
-    if (!(v >= 0.0) || !std::isfinite(v))
-      throw Error(name, 0, "expected a finite number >= 0, got " + std::to_string(v));
-  };
-  nonneg("TopologyOptions.min_rise", o.min_rise);
-  nonneg("TopologyOptions.rise_ratio", o.rise_ratio);
-  nonneg("TopologyOptions.max_door_width", o.max_door_width);
-  nonneg("TopologyOptions.min_region_area", o.min_region_area);
-  nonneg("TopologyOptions.max_rise_walk", o.max_rise_walk);
-  nonneg("TopologyOptions.passage_length", o.passage_length);
-  nonneg("TopologyOptions.min_wall_area", o.min_wall_area);
-  nonneg("TopologyOptions.passage_rise_ratio", o.passage_rise_ratio);
-  nonneg("TopologyOptions.room_test_elongation", o.room_test_elongation);
+  require_finite_nonneg("TopologyOptions.min_rise", o.min_rise);
+  require_finite_nonneg("TopologyOptions.rise_ratio", o.rise_ratio);
+  require_finite_nonneg("TopologyOptions.max_door_width", o.max_door_width);
+  require_finite_nonneg("TopologyOptions.min_region_area", o.min_region_area);
+  require_finite_nonneg("TopologyOptions.max_rise_walk", o.max_rise_walk);
+  require_finite_nonneg("TopologyOptions.passage_length", o.passage_length);
+  require_finite_nonneg("TopologyOptions.min_wall_area", o.min_wall_area);
+  require_finite_nonneg("TopologyOptions.passage_rise_ratio", o.passage_rise_ratio);
+  require_finite_nonneg("TopologyOptions.room_test_elongation", o.room_test_elongation);
+  require_finite_nonneg("TopologyOptions.regions_absorb_obstacles", o.regions_absorb_obstacles);
   check_wall_opening_options(o.wall_openings);
 }
 
@@ -52,6 +50,7 @@ class MinimaFinder {
         walk_(o.max_rise_walk / res),
         passage_(o.passage_length / res),
         passage_rise_(o.passage_rise_ratio),
+        bulges_(o.passage_bulges),
         incident_(graph.nodes.size()) {
     for (std::size_t e = 0; e < graph.edges.size(); ++e) {
       incident_[static_cast<std::size_t>(graph.edges[e].a)].push_back({static_cast<int>(e), 1});
@@ -150,6 +149,15 @@ class MinimaFinder {
         // Where the classic rule fires (both sides rise) the passage rule replaces its middle
         // cut only when both ends open wide.
         if (left && right && !(wide_left && wide_right)) wide_left = wide_right = false;
+        if (len >= passage_ && bulges_) {
+          const double need2 = std::max(need, m * (1.0 + passage_rise_));
+          if (wide_left)
+            bl = static_cast<std::size_t>(
+                past_bulges(v, static_cast<std::ptrdiff_t>(bl), -1, m, band, need2));
+          if (wide_right)
+            br = static_cast<std::size_t>(
+                past_bulges(v, static_cast<std::ptrdiff_t>(br), 1, m, band, need2));
+        }
         if (len >= passage_) {
           if (wide_left && bl > 0) out->push_back(ed.cells[bl]);
           if (wide_right && br + 1 < n) out->push_back(ed.cells[br]);
@@ -189,15 +197,37 @@ class MinimaFinder {
     const double m = lo;
     const double need =
         std::max(m + std::max(min_rise_, rise_ratio_ * m), m * (1.0 + passage_rise_));
+    if (bulges_) last = past_bulges(v, last, step, m, lo + 1.0, need);
     int visits = 0;
     if (rises(e, last + step, step, m, need, budget0, &visits))
       out->push_back(
           graph_.edges[static_cast<std::size_t>(e)].cells[static_cast<std::size_t>(last)]);
   }
 
+  // A passage's end, past its bulges: from cell `last` (the passage's last cell within its band
+  // [m, band]) walking in direction `step` until the clearance drops below m or reaches `need`
+  // (where the passage opens), the last cell back within the band. A bend or a short widening
+  // that narrows again to the passage's width before anything opens is part of the passage, so
+  // the cut goes at the narrowing where it really opens, not at the first bump (issue #15:
+  // lab_intel, a corridor whose L bend came before its door).
+  static std::ptrdiff_t past_bulges(const std::vector<double>& v, std::ptrdiff_t last, int step,
+                                    double m, double band, double need) {
+    const auto n = static_cast<std::ptrdiff_t>(v.size());
+    std::ptrdiff_t end = last;
+    for (std::ptrdiff_t q = last + step; q >= 0 && q < n; q += step) {
+      const double x = v[static_cast<std::size_t>(q)];
+      if (x < m || x >= need) break;
+      if (x <= band) end = q;
+    }
+    // The cut needs a cell beyond it on the edge (the rise test starts there).
+    if (end + step < 0 || end + step >= n) return last;
+    return end;
+  }
+
   const voronoi::VoronoiGraph& graph_;
   const GridMap<float>& clearance_;
   double min_rise_, rise_ratio_, walk_, passage_, passage_rise_;
+  bool bulges_;
   std::vector<std::vector<std::pair<int, int>>> incident_;  // node -> (edge, +1 from a / -1 from b)
 };
 
@@ -216,12 +246,59 @@ struct UnionFind {
   }
 };
 
+// Obstacle components (8-connected blocked cells) of at most max_cells cells, off the map's
+// border, whose every neighbouring free cell lies in one and the same region, join that region
+// (a table or a pillar inside a room: the room without a hole). A component next to two regions
+// (a wall between rooms) or next to free cells of no region stays out. Returns how many joined.
+std::size_t absorb_enclosed_obstacles(const BinaryGrid& blocked, double max_cells,
+                                      GridMap<std::int32_t>* region) {
+  const GridGeometry& geo = blocked.geometry();
+  std::vector<char> seen(blocked.size(), 0);
+  std::vector<Cell> comp, stack;
+  std::size_t joined = 0;
+  for (std::size_t i = 0; i < blocked.size(); ++i) {
+    if (!blocked[i] || seen[i]) continue;
+    comp.clear();
+    seen[i] = 1;
+    stack.push_back(geo.cell_at(i));
+    int owner = -1;
+    bool enclosed = true;
+    while (!stack.empty()) {
+      const Cell c = stack.back();
+      stack.pop_back();
+      comp.push_back(c);
+      for (int k = 0; k < 8; ++k) {
+        const Cell q = c + kNeighbours8[k];
+        if (!geo.contains(q)) {
+          enclosed = false;  // touches the map's border: not inside a room
+          continue;
+        }
+        if (blocked[q]) {
+          if (!seen[geo.index(q)]) {
+            seen[geo.index(q)] = 1;
+            stack.push_back(q);
+          }
+          continue;
+        }
+        const int r = (*region)[q];
+        if (r < 0 || (owner >= 0 && r != owner)) enclosed = false;
+        if (owner < 0) owner = r;
+      }
+    }
+    if (!enclosed || owner < 0 || static_cast<double>(comp.size()) > max_cells) continue;
+    for (const Cell c : comp)
+      (*region)[c] = owner;
+    ++joined;
+  }
+  return joined;
+}
+
 TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid& diagram,
                           const TopologyOptions& o) {
   const GridGeometry& geo = g.geometry;
   const double res = geo.resolution;
   TopologicalMap out{geo, g.blocked, diagram, g.clearance, {}, GridMap<std::int32_t>(geo, -1),
-                     {},  {}};
+                     {},  {},        0};
   if (geo.empty()) return out;
 
   // 1. Critical points along the Voronoi graph's edges.
@@ -533,7 +610,13 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     }
     nregions = n2;
   }
-  // 5. Region statistics and centres.
+  // 4c. Obstacles enclosed by one region (furniture, pillars) join it (regions_absorb_obstacles).
+  std::size_t absorbed_components = 0;
+  if (o.regions_absorb_obstacles > 0.0)
+    absorbed_components =
+        absorb_enclosed_obstacles(g.blocked, o.regions_absorb_obstacles / (res * res), &out.region);
+  out.absorbed_obstacles = absorbed_components;
+  // 5. Region statistics and centres (the centre: a free cell).
   out.regions.resize(static_cast<std::size_t>(nregions));
   std::vector<double> sx(static_cast<std::size_t>(nregions), 0.0), sy(sx);
   for (std::size_t i = 0; i < comp.size(); ++i) {
@@ -543,13 +626,14 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     auto& reg = out.regions[static_cast<std::size_t>(r)];
     reg.id = r;
     reg.cells++;
+    if (g.blocked[i]) reg.absorbed_cells++;
     sx[static_cast<std::size_t>(r)] += c.x;
     sy[static_cast<std::size_t>(r)] += c.y;
   }
   std::vector<double> best(static_cast<std::size_t>(nregions), HUGE_VAL);
   for (std::size_t i = 0; i < comp.size(); ++i) {
     const int r = out.region[i];
-    if (r < 0) continue;
+    if (r < 0 || g.blocked[i]) continue;
     const auto ru = static_cast<std::size_t>(r);
     const Cell c = geo.cell_at(i);
     const double n = static_cast<double>(out.regions[ru].cells);

@@ -8,17 +8,19 @@
 //    below the critical value (a door or a narrowing). A plateau of equal minima gives one point,
 //    its middle. Its two basis points are the nearest obstacle cell and the nearest obstacle cell
 //    on the other side (the site of a neighbour farthest from the first one).
-//    Options beyond the paper (issue #15, all off by default; measured in
-//    docs/reproductions/topology.md): the rise test may continue across junctions
-//    (max_rise_walk); a passage, a run of at least passage_length whose clearance stays within one
-//    cell of its minimum, is cut at the ends where the clearance rises to (1 + passage_rise_ratio)
-//    x its own, also when only one end opens (a corridor mouth, an open-fronted room, a dead end);
-//    critical points on obstacle pieces under min_wall_area (furniture) are dropped; and the room
-//    test (validate_sides) drops a line when neither region it separates holds a cell whose
-//    clearance reaches that rise (two pieces of one passage).
-//    Openings in wall lines (issue #15, on by default; wall_openings.hpp): a door-width gap
-//    between two collinear wall faces, or between a wall stub's end and the wall ahead of it,
-//    is a critical line too (CriticalPoint::wall_gap), unless a narrowing's line is next to it.
+//    Options beyond the paper (issue #15; measured in docs/reproductions/topology.md): the rise
+//    test may continue across junctions (max_rise_walk, off); a passage, a run of at least
+//    passage_length whose clearance stays within one cell of its minimum, is cut at the ends
+//    where the clearance rises to (1 + passage_rise_ratio) x its own, also when only one end
+//    opens (a corridor mouth, an open-fronted room, a dead end), past any bulge that narrows
+//    back to the passage's width before it opens (on by default since the second #15 stop,
+//    with the room test below);
+//    critical points on obstacle pieces under min_wall_area (furniture) are dropped (off); and the
+//    room test (validate_sides, on) drops a line when neither region it separates holds a cell
+//    whose clearance reaches that rise (two pieces of one passage). Openings in wall lines (issue
+//    #15, on by default; wall_openings.hpp): a door-width gap between two collinear wall faces, or
+//    between a wall stub's end and the wall ahead of it, is a critical line too
+//    (CriticalPoint::wall_gap), unless a narrowing's line is next to it.
 //  - critical line: the Bresenham segment between the two basis points.
 //  - regions: the free cells cut by the critical lines, 4-connected components; the cells of the
 //    lines join the smallest adjacent region. Merge rule: a region smaller than min_region_area
@@ -68,23 +70,32 @@ struct TopologyOptions {
   /// A minimum whose clearance stays within one cell of it along at least this length [m] is a
   /// passage (a corridor): it is cut at its ends where the clearance rises, not in its middle,
   /// also when only one end rises; 0 = off.
-  double passage_length = 0.0;
+  double passage_length = 2.0;
   /// A passage end is cut only where the clearance beyond it reaches (1 + this) x the
   /// passage's clearance (a room opens, not a bump in the corridor).
-  double passage_rise_ratio = 1.0;
+  double passage_rise_ratio = 0.75;
+  /// A passage's end lies past its bulges: where the clearance, before it reaches the opening
+  /// rise, comes back within one cell of the passage's, the passage goes on (a bend, a short
+  /// widening), and it is cut at that last narrowing instead of at the first bump.
+  bool passage_bulges = true;
   /// Obstacle components (8-connected) smaller than this [m^2] are free-standing furniture; a
   /// critical point with a basis point on one is not a door and is dropped; 0 = off.
   double min_wall_area = 0.0;
   /// Room test of the critical lines: a line is dropped (its two sides merged) when neither side
   /// holds a cell whose clearance reaches max(clearance + min_rise, clearance x (1 +
   /// max(rise_ratio, passage_rise_ratio))): both are no wider than the line, pieces of one passage.
-  bool validate_sides = false;
+  bool validate_sides = true;
   /// The room test joins two sides only when one of them is a passage piece: its elongation,
   /// area / (2 x its widest clearance)^2, is at least this (about 1-2 for a room, length / width
   /// for a corridor piece); two room-shaped sides behind a wide opening stay apart. 0 = any.
   double room_test_elongation = 2.5;
   /// Regions smaller than this [m^2] are merged into a neighbour (see the file comment).
   double min_region_area = 1.0;
+  /// An obstacle piece (8-connected) of at most this area [m^2], off the map's border, whose
+  /// neighbouring free cells all lie in one region joins that region in `region` (the label
+  /// image, the polygons, the areas): rooms without holes for tables and pillars. A piece next
+  /// to two regions (a wall between rooms) never joins. 0 = off.
+  double regions_absorb_obstacles = 2.0;
   /// Openings in wall lines (wall_openings.hpp): a gap of door width between two collinear wall
   /// faces is closed by a critical line too, unless a critical line already crosses it; off
   /// while wall_openings.max_width is 0.
@@ -106,9 +117,10 @@ struct CriticalPoint {
 
 struct Region {
   int id = 0;
-  std::size_t cells = 0;
+  std::size_t cells = 0;           ///< free cells + absorbed obstacle cells
+  std::size_t absorbed_cells = 0;  ///< obstacle cells joined (regions_absorb_obstacles)
   double area_m2 = 0.0;
-  Cell centre;        ///< region cell nearest the centroid
+  Cell centre;        ///< free region cell nearest the centroid
   Vec2 centre_world;  ///< its world position [m]
 };
 
@@ -125,12 +137,17 @@ struct TopologicalMap {
   BinaryGrid diagram;        ///< the Voronoi diagram used (thinned, pruned)
   GridMap<float> clearance;  ///< [cells]
   std::vector<CriticalPoint> critical_points;
-  GridMap<std::int32_t> region;  ///< region id per free cell, -1 on obstacles
+  /// Region id per free cell, -1 on obstacles (on an absorbed obstacle piece: its region, see
+  /// TopologyOptions::regions_absorb_obstacles).
+  GridMap<std::int32_t> region;
   std::vector<Region> regions;
   std::vector<TopoEdge> edges;
+  std::size_t absorbed_obstacles = 0;  ///< obstacle pieces joined to a region
 
-  /// The region of a cell, -1 for blocked or outside cells.
-  [[nodiscard]] int region_of(Cell c) const { return geometry.contains(c) ? region[c] : -1; }
+  /// The region of a free cell, -1 for blocked (also absorbed) or outside cells.
+  [[nodiscard]] int region_of(Cell c) const {
+    return geometry.contains(c) && blocked[c] == 0 ? region[c] : -1;
+  }
 };
 
 /// Builds the diagram with options.method, then the topological map. Throws voronav::Error for

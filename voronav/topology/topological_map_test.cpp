@@ -153,10 +153,17 @@ TEST(TopologicalMap, InvariantsOnRandomRooms) {
     const BinaryGrid g = random_room(seed, 60, 44, 6);
     const TopologicalMap m = build_topological_map(g);
     const double min_area = TopologyOptions{}.min_region_area;
-    std::vector<std::size_t> count(m.regions.size(), 0);
+    std::vector<std::size_t> count(m.regions.size(), 0), absorbed(m.regions.size(), 0);
     for (std::size_t i = 0; i < g.size(); ++i) {
       if (g[i]) {
-        EXPECT_EQ(m.region[i], -1);
+        // An obstacle cell has no region unless its piece joined one (regions_absorb_obstacles);
+        // region_of, for planning, never gives one.
+        EXPECT_EQ(m.region_of(g.geometry().cell_at(i)), -1);
+        if (m.region[i] >= 0) {
+          ASSERT_LT(m.region[i], static_cast<int>(m.regions.size()));
+          count[static_cast<std::size_t>(m.region[i])]++;
+          absorbed[static_cast<std::size_t>(m.region[i])]++;
+        }
         continue;
       }
       ASSERT_GE(m.region[i], 0) << "seed " << seed;
@@ -165,6 +172,7 @@ TEST(TopologicalMap, InvariantsOnRandomRooms) {
     }
     for (std::size_t r = 0; r < m.regions.size(); ++r) {
       EXPECT_EQ(count[r], m.regions[r].cells);
+      EXPECT_EQ(absorbed[r], m.regions[r].absorbed_cells);
       EXPECT_EQ(m.region_of(m.regions[r].centre), static_cast<int>(r));
       // Small regions survive only when they touch no critical line (isolated pockets).
       if (m.regions[r].area_m2 < min_area) {
@@ -301,6 +309,8 @@ TEST(TopologicalMap, PassageOpeningIntoARoomIsCutAtItsMouth) {
   // wall line continues across the passage's mouth: the wall-opening rule, off here, cuts it.)
   TopologyOptions classic_options;
   classic_options.wall_openings.max_width = 0.0;
+  classic_options.passage_length = 0.0;
+  classic_options.validate_sides = false;
   const TopologicalMap classic = build_topological_map(g, classic_options);
   EXPECT_EQ(classic.regions.size(), 1U);
   TopologyOptions o = classic_options;
@@ -329,9 +339,12 @@ TEST(TopologicalMap, PassageOpeningIntoARoomIsCutAtItsMouth) {
 TEST(TopologicalMap, CorridorBetweenTwoRoomsIsItsOwnRegion) {
   const BinaryGrid g = room_with_open_passage(true);
   // Classic: one cut in the middle of the corridor, each half joins a room.
-  const TopologicalMap classic = build_topological_map(g);
+  TopologyOptions classic_options;
+  classic_options.passage_length = 0.0;
+  classic_options.validate_sides = false;
+  const TopologicalMap classic = build_topological_map(g, classic_options);
   EXPECT_EQ(classic.regions.size(), 2U);
-  TopologyOptions o;
+  TopologyOptions o = classic_options;
   o.passage_length = 1.0;
   const TopologicalMap m = build_topological_map(g, o);
   ASSERT_EQ(m.regions.size(), 3U);
@@ -359,6 +372,7 @@ TEST(TopologicalMap, RoomTestMergesPiecesOfOnePassage) {
   o.passage_length = 1.0;
   o.rise_ratio = 0.05;
   o.min_rise = 0.05;
+  o.passage_bulges = false;  // (the bulge rule alone also keeps the L whole: next test)
   o.validate_sides = true;
   const TopologicalMap m = build_topological_map(g, o);
   const int a = m.region_of(Cell{25, 25}), b = m.region_of(Cell{130, 140});
@@ -369,6 +383,82 @@ TEST(TopologicalMap, RoomTestMergesPiecesOfOnePassage) {
   o.validate_sides = false;
   const TopologicalMap split = build_topological_map(g, o);
   EXPECT_GT(split.regions.size(), m.regions.size());
+}
+
+TEST(TopologicalMap, DeadEndPassageIsCutWhereItOpensNotAtItsBend) {
+  // A 12-cell-wide passage opening into room A, bending north at a right angle and ending blind
+  // (issue #15, lab_intel: a narrow room whose L bend comes before its door). Along the diagram
+  // from the dead end the clearance stays at the passage's 6 cells, bulges at the bend (the
+  // corner square) and narrows back to 6 cells before room A opens. Without the bulge rule the
+  // passage's first rise, the bend, is taken for its opening and the L is cut in two there.
+  BinaryGrid g(GridGeometry{140, 120, 0.05, {}}, 1);
+  fill_rect(g, 1, 1, 50, 50, 0);       // room A
+  fill_rect(g, 51, 20, 130, 31, 0);    // passage east from A
+  fill_rect(g, 119, 32, 130, 110, 0);  // passage north, a dead end
+  TopologyOptions o;
+  o.wall_openings.max_width = 0.0;
+  o.validate_sides = false;  // the room test would mend the cut afterwards: the rule alone here
+  o.passage_bulges = true;
+  const TopologicalMap m = build_topological_map(g, o);
+  const int a = m.region_of(Cell{25, 25});
+  const int east = m.region_of(Cell{90, 25}), north = m.region_of(Cell{125, 100});
+  EXPECT_EQ(m.regions.size(), 2U);
+  EXPECT_NE(a, east);
+  EXPECT_EQ(east, north);
+  for (const auto& cp : m.critical_points) {
+    if (!cp.separates) continue;
+    EXPECT_NEAR(cp.cell.x, 51, 4) << cp.cell;  // at room A's mouth
+  }
+  o.passage_bulges = false;
+  const TopologicalMap cut = build_topological_map(g, o);
+  EXPECT_NE(cut.region_of(Cell{90, 25}), cut.region_of(Cell{125, 100}));
+}
+
+TEST(TopologicalMap, ObstaclesEnclosedByOneRegionJoinIt) {
+  // Two 3 x 3 m rooms (0.05 m cells) joined by two 0.6 m doors; room A holds a 0.5 x 1 m table
+  // (200 cells, 0.5 m^2) and a 1.5 x 1 m block (600 cells, 1.5 m^2); room B a table touching
+  // its wall (part of the wall piece). Only A's table is an obstacle piece enclosed by one region
+  // and under the area: it joins A. The wall piece between the rooms borders both (never joins),
+  // the block is over the area, the wall-side table is part of the outer wall.
+  BinaryGrid g(GridGeometry{125, 63, 0.05, {}}, 1);
+  fill_rect(g, 1, 1, 60, 60, 0);     // room A
+  fill_rect(g, 62, 1, 122, 60, 0);   // room B
+  fill_rect(g, 61, 1, 61, 12, 0);    // two doors: the wall between the rooms is a free-
+  fill_rect(g, 61, 49, 61, 60, 0);   // standing piece (36 cells) bordering both rooms
+  fill_rect(g, 10, 10, 19, 29, 1);   // A's table: 10 x 20 cells
+  fill_rect(g, 25, 35, 54, 54, 1);   // A's block: 30 x 20 cells, 1.5 m^2
+  fill_rect(g, 100, 1, 110, 10, 1);  // B's table against the wall
+  TopologyOptions o;
+  o.min_wall_area = 3.0;  // no critical lines from the table and the block to the walls
+  o.regions_absorb_obstacles = 0.0;
+  const TopologicalMap off = build_topological_map(g, o);
+  ASSERT_EQ(off.regions.size(), 2U);
+  EXPECT_EQ(off.absorbed_obstacles, 0U);
+  o.regions_absorb_obstacles = 1.0;  // the table (0.5 m^2) joins, the block (1.5 m^2) not
+  const TopologicalMap on = build_topological_map(g, o);
+  ASSERT_EQ(on.regions.size(), 2U);
+  EXPECT_EQ(on.absorbed_obstacles, 1U);
+  const int a = on.region_of(Cell{5, 5});
+  ASSERT_GE(a, 0);
+  for (int y = 10; y <= 29; ++y)
+    for (int x = 10; x <= 19; ++x) {
+      EXPECT_EQ(on.region[Cell({x, y})], a) << Cell{x, y};
+      EXPECT_EQ(on.region_of(Cell{x, y}), -1);  // still an obstacle for planning
+    }
+  EXPECT_EQ(on.region[Cell({30, 40})], -1);  // the block: over the area
+  EXPECT_EQ(on.region[Cell({61, 30})], -1);  // the wall between the rooms
+  EXPECT_EQ(on.region[Cell({105, 5})], -1);  // B's table: part of the outer wall
+  const auto& ra = on.regions[static_cast<std::size_t>(a)];
+  const auto& ra_off = off.regions[static_cast<std::size_t>(off.region_of(Cell{5, 5}))];
+  EXPECT_EQ(ra.absorbed_cells, 200U);
+  EXPECT_EQ(ra.cells, ra_off.cells + 200U);
+  EXPECT_NEAR(ra.area_m2, ra_off.area_m2 + 0.5, 1e-9);
+  EXPECT_FALSE(g[ra.centre]);  // the centre stays a free cell
+  EXPECT_EQ(on.edges.size(), off.edges.size());
+  o.regions_absorb_obstacles = 2.0;  // now the block too
+  EXPECT_EQ(build_topological_map(g, o).absorbed_obstacles, 2U);
+  o.regions_absorb_obstacles = -1.0;
+  EXPECT_THROW((void)build_topological_map(g, o), Error);
 }
 
 TEST(TopologicalMap, RoomTestKeepsTwoRoomsBehindAWideOpening) {

@@ -7,6 +7,7 @@
 
 #include "voronav/core/cell_iterators.hpp"
 #include "voronav/core/error.hpp"
+#include "voronav/core/require.hpp"
 
 namespace voronav::topology {
 namespace {
@@ -186,16 +187,12 @@ struct Gap {
 }  // namespace
 
 void check_wall_opening_options(const WallOpeningOptions& o) {
-  auto nonneg = [](const char* name, double v) {
-    if (!(v >= 0.0) || !std::isfinite(v))
-      throw Error(name, 0, "expected a finite number >= 0, got " + std::to_string(v));
-  };
-  nonneg("WallOpeningOptions.min_width", o.min_width);
-  nonneg("WallOpeningOptions.max_width", o.max_width);
-  nonneg("WallOpeningOptions.min_wall_length", o.min_wall_length);
-  nonneg("WallOpeningOptions.max_offset", o.max_offset);
-  nonneg("WallOpeningOptions.fit_tolerance", o.fit_tolerance);
-  nonneg("WallOpeningOptions.max_wall_thickness", o.max_wall_thickness);
+  require_finite_nonneg("WallOpeningOptions.min_width", o.min_width);
+  require_finite_nonneg("WallOpeningOptions.max_width", o.max_width);
+  require_finite_nonneg("WallOpeningOptions.min_wall_length", o.min_wall_length);
+  require_finite_nonneg("WallOpeningOptions.max_offset", o.max_offset);
+  require_finite_nonneg("WallOpeningOptions.fit_tolerance", o.fit_tolerance);
+  require_finite_nonneg("WallOpeningOptions.max_wall_thickness", o.max_wall_thickness);
   if (!(o.max_angle_deg >= 0.0 && o.max_angle_deg < 90.0))
     throw Error("WallOpeningOptions.max_angle_deg", 0,
                 "expected an angle in [0, 90) degrees, got " + std::to_string(o.max_angle_deg));
