@@ -31,9 +31,10 @@ done
 import json, os, statistics, sys
 d = sys.argv[1]
 print("| scenario | method | success | route by relays / source alone / none | Paths lost | "
-      "Repairs executed | change runs with a change on the route | route eq. 2 [m] | "
+      "Paths unacknowledged | Repairs executed | change runs with a change on the route | "
+      "change runs with a Repair asked / answered / executed | route eq. 2 [m] | "
       "source drove [m] | relays drove [m] | traffic no change [B] | traffic with changes [B] |")
-print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 data = {}
 for s in map(int, sys.argv[2:]):
     j = data[s] = json.load(open(os.path.join(d, f"s{s}.json")))
@@ -45,8 +46,11 @@ for s in map(int, sys.argv[2:]):
         nochange = [r for r in runs if r["changes_applied"] == 0]
         change = [r for r in runs if r["changes_applied"] > 0]
         by = v["route_found_by"]
+        rq = "–" if m == "centralized" else (f"{v.get('change_runs_repair_asked', '?')} / "
+              f"{v.get('change_runs_repair_answered', '?')} / {v.get('change_runs_repaired', '?')} of {v['change_runs']}")
         print(f"| {s} | {m} | {len(ok)}/{len(runs)} | {by['relays']} / {by['source_alone']} / {by['none']} | "
-              f"{v['paths_lost']} | {v['repairs_executed']} | {v['change_runs_on_route']}/{v['change_runs']} | "
+              f"{v['paths_lost']} | {v.get('paths_unacknowledged', '?')} | {v['repairs_executed']} | "
+              f"{v['change_runs_on_route']}/{v['change_runs']} | {rq} | "
               f"{mean('route_length_m', ok):.1f} | {mean('source_travel_m', ok):.1f} | "
               f"{mean('relay_travel_m', ok):.1f} | {mean('traffic_bytes', nochange):.0f} | "
               f"{mean('traffic_bytes', change):.0f} |")

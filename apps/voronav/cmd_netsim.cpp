@@ -124,13 +124,15 @@ nlohmann::json summary_json(const sim::Summary& s) {
 /// repairs ran, whether the obstacle changes hit the route in use; route and driving lengths.
 nlohmann::json mechanism_json(const std::vector<sim::NetSimMetrics>& runs) {
   nlohmann::json by = {{"relays", 0}, {"source_alone", 0}, {"none", 0}};
-  int lost = 0, repairs = 0, change_runs = 0, hit = 0, ok = 0;
+  int lost = 0, unacked = 0, late = 0, repairs = 0, change_runs = 0, hit = 0, ok = 0;
   int asked = 0, answered = 0, repaired = 0;  // change runs with a Repair asked / answered / taken
   double route = 0.0, source = 0.0, relay = 0.0;
   for (const auto& r : runs) {
     by[std::string(sim::to_string(r.route_found_by))] =
         by[std::string(sim::to_string(r.route_found_by))].get<int>() + 1;
     lost += r.paths_lost;
+    unacked += r.paths_unacknowledged;
+    late += r.paths_late;
     repairs += r.repairs_executed;
     if (r.changes_applied > 0) {
       ++change_runs;
@@ -149,6 +151,8 @@ nlohmann::json mechanism_json(const std::vector<sim::NetSimMetrics>& runs) {
   const double n = std::max(ok, 1);
   return {{"route_found_by", by},
           {"paths_lost", lost},
+          {"paths_unacknowledged", unacked},
+          {"paths_late", late},
           {"repairs_executed", repairs},
           {"change_runs", change_runs},
           {"change_runs_on_route", hit},
@@ -441,6 +445,8 @@ void run(const NetsimArgs& a) {
                          {"route_found_by", std::string(sim::to_string(r.route_found_by))},
                          {"route_robots", r.route_robots},
                          {"paths_lost", r.paths_lost},
+                         {"paths_unacknowledged", r.paths_unacknowledged},
+                         {"paths_late", r.paths_late},
                          {"repairs_executed", r.repairs_executed},
                          {"repair_requests", r.repair_requests},
                          {"source_repair_requests", r.source_repair_requests},

@@ -74,6 +74,8 @@ std::string metrics_to_json(const sim::NetSimMetrics& m) {
                   {"route_found_by", std::string(sim::to_string(m.route_found_by))},
                   {"route_robots", m.route_robots},
                   {"paths_lost", m.paths_lost},
+                  {"paths_unacknowledged", m.paths_unacknowledged},
+                  {"paths_late", m.paths_late},
                   {"repairs_executed", m.repairs_executed},
                   {"repair_requests", m.repair_requests},
                   {"source_repair_requests", m.source_repair_requests},
@@ -122,6 +124,8 @@ sim::NetSimMetrics metrics_from_json(const std::string& text) {
     m.route_found_by = sim::parse_route_found_by(j.at("route_found_by").get<std::string>());
     m.route_robots = j.at("route_robots").get<int>();
     m.paths_lost = j.at("paths_lost").get<int>();
+    m.paths_unacknowledged = j.value("paths_unacknowledged", 0);
+    m.paths_late = j.value("paths_late", 0);
     m.repairs_executed = j.at("repairs_executed").get<int>();
     m.repair_requests = j.value("repair_requests", 0);
     m.source_repair_requests = j.value("source_repair_requests", 0);

@@ -132,6 +132,7 @@ void RobotAgent::pending_step() {
     return;
   }
   if (now_ - r.pending_since > kHoldPathS) {
+    NS_DEBUG("t=%.1f robot %u loses a path (held too long)\n", now_, r.id.value);
     r.pending.reset();
     ++report_.paths_lost;
     return;
@@ -161,6 +162,8 @@ void RobotAgent::on(const Header& h, const PathMessage& m) {
     // Carried toward the next relay (multi-hop fallback). Loop guard: a robot that already
     // carried this Path does not take it again.
     if (contains(m.carriers, r.id)) {
+      NS_DEBUG("t=%.1f robot %u loses a path (loop guard, from %u)\n", now_, r.id.value,
+               h.sender.value);
       ++report_.paths_lost;
       return;
     }
@@ -169,7 +172,10 @@ void RobotAgent::on(const Header& h, const PathMessage& m) {
   }
   NS_DEBUG("t=%.1f robot %u got path num %u (s_num %u)\n", now_, r.id.value, m.num, r.s_num);
   if (m.num != r.s_num) {  // an answer to a search this robot no longer runs
-    ++report_.paths_lost;
+    NS_DEBUG("t=%.1f robot %u: a path of an old search (num %u)\n", now_, r.id.value, m.num);
+    // The source received it, after a new Search: late, not lost (s2r8). A relay cannot send it
+    // on (it no longer knows that search's senders): lost.
+    ++(is_source() ? report_.paths_late : report_.paths_lost);
     return;
   }
   if (is_source() && !route_.empty()) return;  // delivered; the source already drives a route

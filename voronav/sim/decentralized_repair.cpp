@@ -94,6 +94,36 @@ std::vector<Vec2> RobotAgent::blocking_cells(const std::vector<VoronoiPoint>& pa
   return out;
 }
 
+/// repair_share_changed: `cells` (blocking_cells of a break) with every cell this robot knows
+/// occupied inside the free disc of a point of `path` (the clearance its maker sensed, before
+/// shrink_to_map): the part of the change those robots saw free, e.g. the whole closed door and
+/// not only its cells beside the broken move. Sorted, each once.
+std::vector<Vec2> RobotAgent::changed_cells(const std::vector<VoronoiPoint>& path,
+                                            std::vector<Vec2> cells) {
+  if (!opt().repair_share_changed) return cells;
+  const auto& g = r_.map.world();
+  std::vector<Cell> out;
+  for (Vec2 q : cells)
+    if (const auto c = g.world_to_cell(q)) out.push_back(*c);
+  for (const auto& p : path) {
+    const auto c = g.world_to_cell(p.position);
+    if (!c || !(p.clearance > 0.0f)) continue;
+    const double rad = p.clearance / g.resolution;
+    for_each_disc_cell(*c, rad, [&](Cell d) {
+      if (r_.map.at(d) == kOccupied) out.push_back(d);
+      return true;
+    });
+    report_.metrics.work += static_cast<std::uint64_t>(std::ceil(3.2 * rad * rad)) + 1;
+  }
+  std::sort(out.begin(), out.end(),
+            [](Cell a, Cell b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  cells.clear();
+  for (Cell c : out)
+    cells.push_back(g.cell_center(c));
+  return cells;
+}
+
 /// Marks the cells a Repair says are blocked occupied in this robot's map (repair_share_blocks):
 /// what its sender sensed, so this robot's points and detours no longer pass through them.
 void RobotAgent::learn_blocks(const std::vector<Vec2>& blocked) {
@@ -295,7 +325,8 @@ void RobotAgent::check_relay_route() {
   m.whole_path = path;
   m.broken_from = br->first;
   m.broken_to = to;
-  if (opt().repair_share_blocks) m.blocked = blocking_cells(path, *br);
+  if (opt().repair_share_blocks)
+    m.blocked = changed_cells(r.saved->whole_path, blocking_cells(path, *br));
   r.repairs_seen.insert(m.num);
   ++report_.repair_requests;
   log_repair(false, "finds the route blocked and asks its neighbours (Repair message)");
@@ -367,6 +398,16 @@ void RobotAgent::repair_done() {
 void RobotAgent::repair_timers() {
   if (!repair_out_ || blocked_since_ < 0.0 || repair_resend_at_ < 0.0) return;
   if (now_ + 1e-9 < repair_resend_at_) return;
+  if (opt().repair_resend_new_only) {
+    // Only when a robot that has not had it is in range now (checked again every step).
+    bool fresh = false;
+    for (const auto& n : transport_.nearby(r_.id))
+      if (std::find(repair_heard_.begin(), repair_heard_.end(), n.id) == repair_heard_.end()) {
+        repair_heard_.push_back(n.id);
+        fresh = true;
+      }
+    if (!fresh) return;
+  }
   repair_resend_gap_ *= 2.0;
   repair_resend_at_ = now_ + repair_resend_gap_;
   broadcast(*repair_out_, 1);
@@ -400,6 +441,15 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
     const std::vector<VoronoiPoint> ahead(whole.begin() + 1, whole.end());
     if (!free_ahead(ahead)) {
       ++report_.repair_answers_refused;
+#ifdef VORONAV_NS_TRACE
+      std::vector<VoronoiPoint> rest{VoronoiPoint{s.pos, 1.0f, 0.0f}};
+      rest.insert(rest.end(), ahead.begin(), ahead.end());
+      if (const auto b = find_break(rest, 0))
+        NS_DEBUG("t=%.1f   refused move (%.2f,%.2f)-(%.2f,%.2f), %zu shared cells\n", now_,
+                 rest[b->first].position.x, rest[b->first].position.y,
+                 rest[b->first + 1].position.x, rest[b->first + 1].position.y,
+                 repair_out_->blocked.size());
+#endif
       NS_DEBUG("t=%.1f source ignores robot %u's detour (blocked in its map)\n", now_, from.value);
       return false;
     }
@@ -421,6 +471,8 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
       if (!free_ahead(std::vector<VoronoiPoint>(
               n.begin() + static_cast<std::ptrdiff_t>(std::min(next, n.size())), n.end()))) {
         ++report_.repair_answers_refused;
+        NS_DEBUG("t=%.1f source ignores robot %u's relay detour (blocked in its map)\n", now_,
+                 from.value);
         return false;
       }
       route_ = std::move(n);
@@ -461,7 +513,8 @@ void RobotAgent::check_source_route() {
   ++report_.repairs;
   const std::uint32_t to = rejoin_past_block(rest, *br);
   if (opt().repair_share_blocks || opt().repair_check_seen) block_seen_ = blocking_cells(rest, *br);
-  shrink_to_map(rest);  // as in check_relay_route
+  const std::vector<VoronoiPoint> sensed = rest;  // the clearances its makers sensed
+  shrink_to_map(rest);                            // as in check_relay_route
   auto fixed = detour(rest, br->first, to);
   NS_DEBUG("t=%.1f source own detour %zu\n", now_, fixed.size());
   if (!fixed.empty()) {
@@ -482,11 +535,14 @@ void RobotAgent::check_source_route() {
   m.whole_path = rest;
   m.broken_from = br->first;
   m.broken_to = to;
-  if (opt().repair_share_blocks) m.blocked = block_seen_;
+  if (opt().repair_share_blocks) m.blocked = changed_cells(sensed, block_seen_);
   s.repairs_seen.insert(m.num);
   ++report_.repair_requests;
   log_repair(false, "is blocked and asks its neighbours (Repair message)");
   repair_out_ = m;
+  repair_heard_.clear();
+  for (const auto& n : transport_.nearby(s.id))
+    repair_heard_.push_back(n.id);
   repair_resend_gap_ = opt().repair_resend_s;
   repair_resend_at_ = repair_resend_gap_ > 0.0 ? now_ + repair_resend_gap_ : -1.0;
   broadcast(m, 1);

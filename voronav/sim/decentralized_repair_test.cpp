@@ -176,5 +176,61 @@ TEST(DecentralizedRepair, ARepairTellsItsAnswerersWhereTheRouteIsBlocked) {
   EXPECT_FALSE(crosses_block(told)) << way;
 }
 
+// repair_share_changed (issue #13, stop 18): a Repair carries every cell its sender knows
+// occupied inside the free discs of the route's points (the part of the change the route's
+// makers saw free), not only the cells beside the broken move; an answerer then offers no detour
+// a little to the side through the same block (s2r9, s2r13, s4r6: every answer refused). The
+// runs are the same up to the first Repair: with the rule it is larger by the extra cells.
+TEST(DecentralizedRepair, ARepairCarriesTheWholeSeenChangeOnTheRoute) {
+  auto first_repair_bytes = [](bool changed) {
+    NetSimOptions o;
+    o.repair_share_changed = changed;
+    const auto c = run(o, 12.0);
+    EXPECT_TRUE(c.res.metrics.success);
+    EXPECT_EQ(c.res.metrics.search_attempts, 1) << "repaired without a new Search";
+    for (const auto& m : c.res.recording.messages)
+      if (m.type == network::MessageType::kRepair) return m.bytes;
+    return std::size_t{0};
+  };
+  const std::size_t beside = first_repair_bytes(false), whole = first_repair_bytes(true);
+  ASSERT_GT(beside, 0u) << "a Repair is sent";
+  // 8 bytes a cell: at least 4 more cells of the 0.8 x 3.6 m block than beside the broken move.
+  EXPECT_GE(whole, beside + 4 * 8) << beside << " B without the rule";
+}
+
+// repair_resend_new_only (issue #13, stop 18): when nobody can answer (here a wall closes the
+// whole hall ahead of the source, and no robot moves), the source's Repair is not re-sent to the
+// same neighbours, who ignore a Repair they have had (Table 4 line 1). Without the rule it goes
+// out again after 1, 2 and 4 s (s4r6: 36 of 43 Repairs were such re-sends).
+TEST(DecentralizedRepair, AnUnansweredRepairIsNotResentToTheSameNeighbours) {
+  auto sc = hall(12.0);
+  sc.changes.front().cells.clear();
+  for (int y = 2; y < 38; ++y)  // x 20..20.8 m across the whole hall
+    for (int x = 100; x < 104; ++x)
+      sc.changes.front().cells.push_back({x, y});
+  auto source_repairs = [&](bool new_only) {
+    NetSimOptions o;
+    o.method = Method::kDecentralized;
+    o.record = true;
+    o.repair_resend_new_only = new_only;
+    o.time_limit_s = 90.0;
+    const auto res = run_netsim(sc, o);
+    EXPECT_FALSE(res.metrics.success) << "no way round the wall";
+    double asked = -1.0;  // the source's first own Repair (it relays others' Repairs too)
+    for (const auto& r : res.recording.repairs)
+      if (r.robot == 0 && !r.executed && asked < 0.0) asked = r.t_s;
+    EXPECT_GE(asked, 0.0) << "the source is blocked and asks";
+    int n = 0;
+    for (const auto& m : res.recording.messages)
+      n += m.type == network::MessageType::kRepair && m.from == 0 && m.t_s >= asked - 1e-9 &&
+                   m.t_s < asked + o.repair_timeout_s - 0.1
+               ? 1
+               : 0;
+    return n;
+  };
+  EXPECT_EQ(source_repairs(true), 1);
+  EXPECT_EQ(source_repairs(false), 4) << "sent, then re-sent after 1, 2 and 4 s";
+}
+
 }  // namespace
 }  // namespace voronav::sim

@@ -140,6 +140,19 @@ struct NetSimOptions {
   /// in its own map before it looks for a detour, so a robot that has not seen the change answers
   /// no detour through it (s2 runs 9, 13: the only answer went through the closed door).
   bool repair_share_blocks = true;
+  /// Decentralized, not in the paper (issue #13, stop 18): with repair_share_blocks, a Repair
+  /// also carries every cell its sender knows occupied inside the free disc of a point of the
+  /// route ahead: the part of the change the route's makers saw free. The cells beside the broken
+  /// move alone let an answerer offer a detour a little to the side, through the same closed
+  /// door, which the source then refused (s2r9, s2r13). Off by default: with it the source takes
+  /// those answers in s2r9 and s2r13 but meets the change again at once, s2r13 no longer arrives
+  /// and s4r10 sends 128.9 kB instead of 56.5 kB (docs/reproductions/networked.md, stop 18).
+  bool repair_share_changed = false;
+  /// Decentralized, not in the paper: the source re-sends its Repair (repair_resend_s) only when
+  /// a robot is in radio range that was not at any earlier send: a robot that had it ignores it
+  /// (Table 4 line 1), so a re-send to the same neighbours only adds traffic (s4r6: 36 of 43
+  /// Repairs were re-sends, none answered).
+  bool repair_resend_new_only = true;
   /// Decentralized, not in the paper: the source takes a repaired route only when no cell within
   /// the robot radius of its moves is unknown to the source and next to a cell it saw blocking
   /// its route: there the obstacle may continue unseen (s1r7, s4r6). Off by default: it changed
@@ -227,8 +240,10 @@ struct NetSimMetrics {
   /// Who produced the route (robot_agent.hpp, RouteFoundBy; the centralized source always
   /// plans alone, so its runs say source_alone).
   RouteFoundBy route_found_by = RouteFoundBy::kNone;
-  int route_robots = 0;      ///< robots whose open points are on the first route
-  int paths_lost = 0;        ///< Path messages that could not be delivered
+  int route_robots = 0;          ///< robots whose open points are on the first route
+  int paths_lost = 0;            ///< Path messages that could not be delivered
+  int paths_unacknowledged = 0;  ///< Paths without LinkAck after the retries (received or not)
+  int paths_late = 0;  ///< Paths of an earlier Search the source received (delivered, not lost)
   int repairs_executed = 0;  ///< local Repairs (Tables 4–5) that produced a detour
   /// Repair traffic (robot_agent.hpp AgentReport): Repair messages started by all robots and by
   /// the source, detours sent back, and repaired routes that reached the source / it refused.

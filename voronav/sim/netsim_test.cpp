@@ -383,6 +383,61 @@ TEST(NetSim, PathIsCarriedHopByHopAndALoopIsCounted) {
     EXPECT_NE(log[i].type, network::MessageType::kPath) << "the looping Path is not sent on";
 }
 
+// Path accounting (issue #13, stop 18): a Path that reached its addressee but whose LinkAck did
+// not come back (s2r3, s2r7: the robots were 25.0-25.5 m apart one 0.2 s step later) is counted
+// unacknowledged, not lost, and is not carried again. Robot 2 hands a Path to robot 1 (in range);
+// from the next step on robot 2 is out of everyone's radio range (its position on the radio is
+// moved away after each publish), so robot 1's acks and robot 2's retries all fail.
+TEST(NetSim, APathReceivedButNotAcknowledgedIsNotLost) {
+  using network::RobotId;
+  NetSimScenario sc;
+  sc.world = OccupancyGrid(GridGeometry{100, 20, 0.2, {}}, kFree);
+  sc.robots = {{1.0, 2.0}, {9.0, 2.0}, {17.0, 2.0}};
+  sc.destination = {19.0, 2.0};
+  NetSimOptions o;
+  o.method = Method::kDecentralized;
+  o.radio.range_m = 10.0;
+  const BinaryGrid truth = binarize(sc.world);
+  std::vector<RecordedMessage> log;
+  AgentContext ctx{&sc, &o, &truth, &log};
+  network::SimRadio radio(o.radio);
+  std::vector<std::unique_ptr<RobotAgent>> a;
+  for (std::uint32_t i = 0; i < 3; ++i)
+    a.push_back(std::make_unique<RobotAgent>(ctx, RobotId{i}, sc.robots[i], radio));
+  for (auto& g : a)
+    g->begin();
+  const RobotId phantom{3};
+  radio.update_position(phantom, {18.0, 2.0});
+  network::PathMessage p;
+  p.source = RobotId{0};
+  p.num = 1;
+  p.relays = {RobotId{0}};
+  p.whole_path = {{{1.0, 2.0}, 1.0f, 0.0f}, {{19.0, 2.0}, 1.0f, 0.0f}};
+  p.carriers = {phantom};
+  p.toward = sc.robots[0];
+  radio.send(phantom, RobotId{2},
+             network::encode({network::Header{phantom, RobotId{2}, phantom, 9001, 0}, p}));
+  for (int k = 1; k <= 700; ++k) {  // 140 s: past the retries and a 120 s hold
+    radio.set_time(0.2 * k);
+    for (auto& g : a)
+      g->flush();
+    if (k >= 2) radio.update_position(RobotId{2}, {60.0, 30.0});
+    for (auto& g : a)
+      g->communicate(0.2 * k);
+  }
+  int sends_2_to_1 = 0, sends_1_to_0 = 0;
+  for (const auto& r : log) {
+    if (r.type != network::MessageType::kPath) continue;
+    sends_2_to_1 += r.from == 2 && r.to == 1 ? 1 : 0;
+    sends_1_to_0 += r.from == 1 && r.to == 0 ? 1 : 0;
+  }
+  EXPECT_EQ(sends_1_to_0, 1) << "robot 1 received the Path and delivered it on";
+  EXPECT_EQ(sends_2_to_1, 1 + o.link_retries) << "robot 2 sent it and retried";
+  EXPECT_EQ(a[2]->report().paths_unacknowledged, 1);
+  EXPECT_EQ(a[2]->report().paths_lost, 0) << "received: only its ack failed";
+  EXPECT_EQ(a[1]->report().paths_lost, 0);
+}
+
 // Issue #13: the obstacle changes of a change run close the same door for both methods, each
 // when its source is 5 m before it on its route in use, so both methods really meet the change.
 TEST(Scenarios, ChangeRunsCloseTheSameDoorOnBothRoutesInUse) {

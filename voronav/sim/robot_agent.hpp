@@ -63,7 +63,13 @@ struct AgentReport {
   RouteFoundBy found_by = RouteFoundBy::kNone;
   int route_robots = 0;  ///< robots whose open points are on the first route
   // Every robot.
-  int paths_lost = 0;        ///< Path messages that could not be delivered (counted, not dropped)
+  int paths_lost = 0;  ///< Path messages that could not be delivered (counted, not dropped)
+  /// Paths whose link retries ran out without a LinkAck (issue #13): a Path sent while its
+  /// addressee was in radio range (lossless radio) was received, and only the ack failed; it
+  /// counts here and not in paths_lost.
+  int paths_unacknowledged = 0;
+  /// (source) Paths of an earlier Search received after it started a new one: not lost.
+  int paths_late = 0;
   int repairs_executed = 0;  ///< local Repairs (Tables 4–5) that produced a detour
   /// Repair traffic, traced (issue #13): Repair messages this robot started (Tables 4–5 line 1,
   /// not the re-sends), detours it sent back (an answer, or a relay's own detour), and (source)
@@ -178,6 +184,7 @@ class RobotAgent {
     std::uint64_t key;
     int tries;
     double next_at;
+    bool reached = false;  // (Path) the addressee was in radio range at one of its transmissions
   };
   struct Held {
     network::RobotId to;  // kBroadcast for a broadcast
@@ -257,6 +264,8 @@ class RobotAgent {
                                                 std::pair<std::uint32_t, std::uint32_t> br);
   [[nodiscard]] std::vector<Vec2> blocking_cells(const std::vector<network::VoronoiPoint>& path,
                                                  std::pair<std::uint32_t, std::uint32_t> br);
+  [[nodiscard]] std::vector<Vec2> changed_cells(const std::vector<network::VoronoiPoint>& path,
+                                                std::vector<Vec2> cells);
   void learn_blocks(const std::vector<Vec2>& blocked);
   [[nodiscard]] bool seen_near_block(const std::vector<network::VoronoiPoint>& ahead) const;
   void shrink_to_map(std::vector<network::VoronoiPoint>& path);
@@ -316,6 +325,8 @@ class RobotAgent {
   std::uint32_t repair_seq_ = 0;
   // Source: the Repair it waits an answer for, re-sent (same Num) with back-off (repair_resend_s).
   std::optional<network::RepairMessage> repair_out_;
+  // Source: robots in radio range at the sends of repair_out_ (repair_resend_new_only).
+  std::vector<network::RobotId> repair_heard_;
   double repair_resend_at_ = -1.0;
   double repair_resend_gap_ = 0.0;
   // Relay: the ends of the break of its saved path it already asked about (asked once).

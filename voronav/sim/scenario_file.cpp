@@ -193,6 +193,8 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
            "repair_check_answer",
            "repair_rejoin_m",
            "repair_share_blocks",
+           "repair_share_changed",
+           "repair_resend_new_only",
            "repair_check_seen",
            "path_fallback_after_retries",
            "search_timeout_per_m",
@@ -247,6 +249,8 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   flag("source_straight_start", o.source_straight_start);
   flag("repair_check_answer", o.repair_check_answer);
   flag("repair_share_blocks", o.repair_share_blocks);
+  flag("repair_share_changed", o.repair_share_changed);
+  flag("repair_resend_new_only", o.repair_resend_new_only);
   flag("repair_check_seen", o.repair_check_seen);
   flag("path_fallback_after_retries", o.path_fallback_after_retries);
   flag("frontier_by_points", o.frontier_by_points);
@@ -490,6 +494,8 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
       << "  repair_check_answer: " << (o.repair_check_answer ? "true" : "false") << "\n"
       << "  repair_rejoin_m: " << fmt(o.repair_rejoin_m) << "\n"
       << "  repair_share_blocks: " << (o.repair_share_blocks ? "true" : "false") << "\n"
+      << "  repair_share_changed: " << (o.repair_share_changed ? "true" : "false") << "\n"
+      << "  repair_resend_new_only: " << (o.repair_resend_new_only ? "true" : "false") << "\n"
       << "  repair_check_seen: " << (o.repair_check_seen ? "true" : "false") << "\n"
       << "  path_fallback_after_retries: " << (o.path_fallback_after_retries ? "true" : "false")
       << "\n"

@@ -40,6 +40,8 @@ json agent_report_json(const sim::AgentReport& a) {
           {"found_by", std::string(sim::to_string(a.found_by))},
           {"route_robots", a.route_robots},
           {"paths_lost", a.paths_lost},
+          {"paths_unacknowledged", a.paths_unacknowledged},
+          {"paths_late", a.paths_late},
           {"repairs_executed", a.repairs_executed},
           {"repair_requests", a.repair_requests},
           {"repair_answers", a.repair_answers},
@@ -66,6 +68,8 @@ sim::AgentReport agent_report_from(const json& j) {
   a.found_by = sim::parse_route_found_by(j.at("found_by").get<std::string>());
   a.route_robots = j.at("route_robots").get<int>();
   a.paths_lost = j.at("paths_lost").get<int>();
+  a.paths_unacknowledged = j.value("paths_unacknowledged", 0);
+  a.paths_late = j.value("paths_late", 0);
   a.repairs_executed = j.at("repairs_executed").get<int>();
   a.repair_requests = j.value("repair_requests", 0);
   a.repair_answers = j.value("repair_answers", 0);
