@@ -321,37 +321,65 @@ TEST(NetSim, PathIsDeliveredWhenTheAnsweringRelayWalkedOutOfRange) {
 // The multi-hop fallback and its loop guard, on three agents in a row 8 m apart with a 10 m
 // radio: robot 2 must deliver a Path to robot 0 (out of its range) and hands it to robot 1, which
 // delivers it; a Path that comes back to a robot that already carried it is counted lost.
-TEST(NetSim, PathIsCarriedHopByHopAndALoopIsCounted) {
-  using network::RobotId;
-  NetSimScenario sc;
-  sc.world = OccupancyGrid(GridGeometry{100, 20, 0.2, {}}, kFree);
-  sc.robots = {{1.0, 2.0}, {9.0, 2.0}, {17.0, 2.0}};
-  sc.destination = {19.0, 2.0};
-  NetSimOptions o;
-  o.method = Method::kDecentralized;
-  o.radio.range_m = 10.0;
-  const BinaryGrid truth = binarize(sc.world);
-  std::vector<RecordedMessage> log;
-  AgentContext ctx{&sc, &o, &truth, &log};
-  network::SimRadio radio(o.radio);
-  std::vector<std::unique_ptr<RobotAgent>> a;
-  for (std::uint32_t i = 0; i < 3; ++i)  // no search is started: only the Path is exchanged
-    a.push_back(std::make_unique<RobotAgent>(ctx, RobotId{i}, sc.robots[i], radio));
-  for (auto& g : a)
-    g->begin();
-  const RobotId phantom{3};  // hands robot 2 the Path, as the robot before it would
-  radio.update_position(phantom, {18.0, 2.0});
-  network::PathMessage p;
-  p.source = RobotId{0};
-  p.num = 1;
-  p.relays = {RobotId{0}};
-  p.whole_path = {{{1.0, 2.0}, 1.0f, 0.0f}, {{19.0, 2.0}, 1.0f, 0.0f}};
-  p.carriers = {phantom};
-  p.toward = sc.robots[0];
-  auto inject = [&](RobotId to, const network::PathMessage& m, std::uint32_t id) {
-    network::Envelope e{network::Header{phantom, to, phantom, id, 0}, m};
+// Three decentralized agents in a row 8 m apart on an open 20 x 4 m floor with a 10 m radio, and
+// a phantom robot 3 at (18, 2) that hands robot `to` a Path of robot 0's Search 1 (as the robot
+// before it on the relay list would). No search is started: only the Path is exchanged.
+class PathHandOff : public ::testing::Test {
+ protected:
+  using RobotId = network::RobotId;
+
+  PathHandOff() : truth(make_world()), ctx{&sc, &o, &truth, &log}, radio(make_options()) {
+    for (std::uint32_t i = 0; i < 3; ++i)
+      a.push_back(std::make_unique<RobotAgent>(ctx, RobotId{i}, sc.robots[i], radio));
+    for (auto& g : a)
+      g->begin();
+    radio.update_position(phantom, {18.0, 2.0});
+    p.source = RobotId{0};
+    p.num = 1;
+    p.relays = {RobotId{0}};
+    p.whole_path = {{{1.0, 2.0}, 1.0f, 0.0f}, {{19.0, 2.0}, 1.0f, 0.0f}};
+    p.carriers = {phantom};
+    p.toward = sc.robots[0];
+  }
+
+  void inject(RobotId to, std::uint32_t id) {
+    network::Envelope e{network::Header{phantom, to, phantom, id, 0}, p};
     radio.send(phantom, to, network::encode(e));
-  };
+  }
+
+  // Paths sent from robot `from` to robot `to` so far.
+  [[nodiscard]] int path_sends(std::uint32_t from, std::uint32_t to) const {
+    int n = 0;
+    for (const auto& r : log)
+      n += r.from == from && r.to == to && r.type == network::MessageType::kPath ? 1 : 0;
+    return n;
+  }
+
+  NetSimScenario sc;
+  NetSimOptions o;
+  BinaryGrid truth;
+  std::vector<RecordedMessage> log;
+  AgentContext ctx;
+  network::SimRadio radio;
+  std::vector<std::unique_ptr<RobotAgent>> a;
+  const RobotId phantom{3};
+  network::PathMessage p;
+
+ private:
+  BinaryGrid make_world() {
+    sc.world = OccupancyGrid(GridGeometry{100, 20, 0.2, {}}, kFree);
+    sc.robots = {{1.0, 2.0}, {9.0, 2.0}, {17.0, 2.0}};
+    sc.destination = {19.0, 2.0};
+    return binarize(sc.world);
+  }
+  const network::RadioOptions& make_options() {
+    o.method = Method::kDecentralized;
+    o.radio.range_m = 10.0;
+    return o.radio;
+  }
+};
+
+TEST_F(PathHandOff, PathIsCarriedHopByHopAndALoopIsCounted) {
   auto step = [&](int from, int to) {
     for (int k = from; k <= to; ++k) {
       radio.set_time(0.2 * k);
@@ -361,14 +389,8 @@ TEST(NetSim, PathIsCarriedHopByHopAndALoopIsCounted) {
         g->communicate(0.2 * k);
     }
   };
-  inject(RobotId{2}, p, 9001);
+  inject(RobotId{2}, 9001);
   step(1, 10);
-  auto path_sends = [&](std::uint32_t from, std::uint32_t to) {
-    int n = 0;
-    for (const auto& r : log)
-      n += r.from == from && r.to == to && r.type == network::MessageType::kPath ? 1 : 0;
-    return n;
-  };
   EXPECT_EQ(path_sends(2, 1), 1) << "robot 2 hands the Path to robot 1 (closer to robot 0)";
   EXPECT_EQ(path_sends(1, 0), 1) << "robot 1 has robot 0 in range and delivers it";
   EXPECT_EQ(path_sends(2, 0), 0) << "robot 0 is out of robot 2's range";
@@ -376,7 +398,7 @@ TEST(NetSim, PathIsCarriedHopByHopAndALoopIsCounted) {
   // Loop guard: a Path that already went through robot 1 comes back to it.
   p.carriers = {phantom, RobotId{1}};
   const auto before = log.size();
-  inject(RobotId{1}, p, 9002);
+  inject(RobotId{1}, 9002);
   step(11, 13);
   EXPECT_EQ(a[1]->report().paths_lost, 1);
   for (std::size_t i = before; i < log.size(); ++i)
@@ -388,35 +410,8 @@ TEST(NetSim, PathIsCarriedHopByHopAndALoopIsCounted) {
 // unacknowledged, not lost, and is not carried again. Robot 2 hands a Path to robot 1 (in range);
 // from the next step on robot 2 is out of everyone's radio range (its position on the radio is
 // moved away after each publish), so robot 1's acks and robot 2's retries all fail.
-TEST(NetSim, APathReceivedButNotAcknowledgedIsNotLost) {
-  using network::RobotId;
-  NetSimScenario sc;
-  sc.world = OccupancyGrid(GridGeometry{100, 20, 0.2, {}}, kFree);
-  sc.robots = {{1.0, 2.0}, {9.0, 2.0}, {17.0, 2.0}};
-  sc.destination = {19.0, 2.0};
-  NetSimOptions o;
-  o.method = Method::kDecentralized;
-  o.radio.range_m = 10.0;
-  const BinaryGrid truth = binarize(sc.world);
-  std::vector<RecordedMessage> log;
-  AgentContext ctx{&sc, &o, &truth, &log};
-  network::SimRadio radio(o.radio);
-  std::vector<std::unique_ptr<RobotAgent>> a;
-  for (std::uint32_t i = 0; i < 3; ++i)
-    a.push_back(std::make_unique<RobotAgent>(ctx, RobotId{i}, sc.robots[i], radio));
-  for (auto& g : a)
-    g->begin();
-  const RobotId phantom{3};
-  radio.update_position(phantom, {18.0, 2.0});
-  network::PathMessage p;
-  p.source = RobotId{0};
-  p.num = 1;
-  p.relays = {RobotId{0}};
-  p.whole_path = {{{1.0, 2.0}, 1.0f, 0.0f}, {{19.0, 2.0}, 1.0f, 0.0f}};
-  p.carriers = {phantom};
-  p.toward = sc.robots[0];
-  radio.send(phantom, RobotId{2},
-             network::encode({network::Header{phantom, RobotId{2}, phantom, 9001, 0}, p}));
+TEST_F(PathHandOff, APathReceivedButNotAcknowledgedIsNotLost) {
+  inject(RobotId{2}, 9001);
   for (int k = 1; k <= 700; ++k) {  // 140 s: past the retries and a 120 s hold
     radio.set_time(0.2 * k);
     for (auto& g : a)
@@ -425,14 +420,8 @@ TEST(NetSim, APathReceivedButNotAcknowledgedIsNotLost) {
     for (auto& g : a)
       g->communicate(0.2 * k);
   }
-  int sends_2_to_1 = 0, sends_1_to_0 = 0;
-  for (const auto& r : log) {
-    if (r.type != network::MessageType::kPath) continue;
-    sends_2_to_1 += r.from == 2 && r.to == 1 ? 1 : 0;
-    sends_1_to_0 += r.from == 1 && r.to == 0 ? 1 : 0;
-  }
-  EXPECT_EQ(sends_1_to_0, 1) << "robot 1 received the Path and delivered it on";
-  EXPECT_EQ(sends_2_to_1, 1 + o.link_retries) << "robot 2 sent it and retried";
+  EXPECT_EQ(path_sends(1, 0), 1) << "robot 1 received the Path and delivered it on";
+  EXPECT_EQ(path_sends(2, 1), 1 + o.link_retries) << "robot 2 sent it and retried";
   EXPECT_EQ(a[2]->report().paths_unacknowledged, 1);
   EXPECT_EQ(a[2]->report().paths_lost, 0) << "received: only its ack failed";
   EXPECT_EQ(a[1]->report().paths_lost, 0);
