@@ -21,3 +21,9 @@ ga_run() {
     --scen "$ROOT/data/mapf/random-32-32-20-random-1.scen" --agents "$k" --seed "$seed" \
     --at-start appear --at-goal leave --search ga --quiet --json "$@" >"$out"
 }
+
+# ga_variant_name "OPTIONS": a short column name for a setting ("--ga-three-opt-order
+# critical-delayed --ga-stall 6" -> "critical-delayed stall 6").
+ga_variant_name() {
+  echo "$1" | sed -e 's/--ga-three-opt-order //' -e 's/--ga-//g' -e 's/ *$//'
+}

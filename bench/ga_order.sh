@@ -22,8 +22,7 @@ echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
 head="| K | seed | paper CPU [s] | paper wall [s] | paper makespan [s]"
 sep="|---|---|---|---|---"
 for v in "${VARS[@]}"; do
-  # shellcheck disable=SC2001
-  name=$(echo "$v" | sed -e 's/--ga-three-opt-order //' -e 's/--ga-//g' -e 's/ *$//')
+  name=$(ga_variant_name "$v")
   head+=" | $name CPU [s] | $name wall [s] | $name makespan [s] | change"
   sep+="|---|---|---|---"
 done
