@@ -320,7 +320,8 @@ class RobotAgent {
   bool boxed_in_ = false;
   // Where it last searched anew after a block it could not repair (a second block within the
   // sensing range of it means the answers lead nowhere: it is boxed in).
-  std::optional<Vec2> searched_after_block_;  // since its last sensing walk, until it has a route again
+  std::optional<Vec2>
+      searched_after_block_;  // since its last sensing walk, until it has a route again
   BinaryGrid sensed_by_walks_;
   std::uint32_t repair_seq_ = 0;
   // Source: the Repair it waits an answer for, re-sent (same Num) with back-off (repair_resend_s).
