@@ -13,6 +13,7 @@
 #   JOBS     parallel runs                           (2)
 #   OUT      result name: bench/results/$OUT.md and ${OUT}_runs.json   (exploration)
 #   VORONAV_BIN  the voronav binary to run (default: build it in the build dir and run that)
+#   EXTRA_ARGS   more `voronav explore` options for every run (e.g. "--yield-to-held off")
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/default}
@@ -29,6 +30,7 @@ export TIME=${TIME:-900} SEEDS=${SEEDS:-16} JOBS=${JOBS:-2} OUT=${OUT:-explorati
 /usr/bin/python3 - <<'PY'
 import concurrent.futures as cf, datetime, json, os, statistics, subprocess, tempfile, time
 bin_, root = os.environ["VORONAV_BIN"], os.environ["ROOT"]
+extra = os.environ.get("EXTRA_ARGS", "").split()
 maps, robots = os.environ["MAPS"].split(), [int(r) for r in os.environ["ROBOTS"].split()]
 methods, sim_time = os.environ["METHODS"].split(), os.environ["TIME"]
 seeds, jobs, outname = int(os.environ["SEEDS"]), int(os.environ["JOBS"]), os.environ["OUT"]
@@ -38,7 +40,8 @@ def one(m, n, meth, seed):
     args = ["--method", "tree", "--tree-replan", "robots"] if meth == "tree+replan" else ["--method", meth]
     with tempfile.TemporaryDirectory() as d:
         cmd = [bin_, "explore", "--world", m, "--robots", str(n), *args, "--time", sim_time,
-               "--seed", str(seed), "--stop-at", "0.995", "--json", "--out", d, "--picture-px", "200"]
+               "--seed", str(seed), "--stop-at", "0.995", "--json", "--out", d, "--picture-px", "200",
+               *extra]
         t0 = time.time()
         p = subprocess.run(cmd, capture_output=True, text=True)
         if p.returncode != 0:
@@ -58,7 +61,7 @@ with cf.ThreadPoolExecutor(jobs) as ex:
             continue
         rows.append(r)
         print(r["map"], r["robots"], r["method"], r["seed"], r["coverage"], r["t90_s"], r["t99_s"],
-              "stalled", r["stalled_robots"], f'{r["wall_s"]} s', flush=True)
+              "stalled", r["stalled_robots"], "yields", r.get("yields"), "idle_unsticks", r.get("idle_unsticks"), f'{r["wall_s"]} s', flush=True)
 json.dump(rows, open(os.path.join(root, "bench/results", outname + "_runs.json"), "w"))
 
 def ms(vals, d=0, missing_as=None):

@@ -32,6 +32,8 @@ struct ExploreArgs {
   double random_turn_rate = 0.0;
   std::string unstick = "on";
   std::string frontier_unstick = "off";
+  std::string idle_unstick = "on";
+  std::string yield_to_held = "on";
   std::uint64_t seed = 1;
   std::string start;
   std::filesystem::path out;
@@ -116,6 +118,8 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                 {"random_turn_rate", a.random_turn_rate},
                 {"unstick", a.unstick},
                 {"frontier_unstick", a.frontier_unstick},
+                {"idle_unstick", a.idle_unstick},
+                {"yield_to_held", a.yield_to_held},
                 {"seed", a.seed},
                 {"stop_at_coverage", a.stop_at}};
   if (!a.start.empty()) {
@@ -153,6 +157,8 @@ void run(const ExploreArgs& a) {
   o.controller.random_turn_rate = a.random_turn_rate;
   o.unstick = a.unstick == "on";
   o.frontier_unstick = a.frontier_unstick == "on";
+  o.idle_unstick = a.idle_unstick == "on";
+  o.yield_to_held = a.yield_to_held == "on";
   o.seed = a.seed;
   o.stop_at_coverage = a.stop_at;
   if (!a.start.empty())
@@ -256,6 +262,16 @@ void setup(CLI::App& app) {
   cmd->add_option("--frontier-unstick", args->frontier_unstick,
                   "frontier, coordinated, tree-frontier: the same (off by default: on willow it "
                   "stalled more robots)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--idle-unstick", args->idle_unstick,
+                  "frontier, coordinated, tree-frontier: a robot without a goal on one spot for "
+                  "20 s drives to open space even with --frontier-unstick off (on, ours) or not")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--yield-to-held", args->yield_to_held,
+                  "every method: a robot stopped by a robot in front that is held up itself "
+                  "backs off whatever their indices (on, ours) or only from a lower index (off)")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   cmd->add_option("--time", args->time, "Simulated time limit [s]")

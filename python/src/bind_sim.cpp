@@ -353,6 +353,10 @@ void bind_sim(py::module_& m) {
       .def_readwrite("unstick", &ex::ExplorationOptions::unstick, "tree (CLI --unstick on|off)")
       .def_readwrite("frontier_unstick", &ex::ExplorationOptions::frontier_unstick,
                      "frontier methods (CLI --frontier-unstick on|off)")
+      .def_readwrite("idle_unstick", &ex::ExplorationOptions::idle_unstick,
+                     "frontier methods, goalless robots (CLI --idle-unstick on|off)")
+      .def_readwrite("yield_to_held", &ex::ExplorationOptions::yield_to_held,
+                     "every method (CLI --yield-to-held on|off)")
       .def_readwrite("controller", &ex::ExplorationOptions::controller,
                      "tree: the reactive search's ControllerOptions")
       .def_readwrite("frontier_controller", &ex::ExplorationOptions::frontier_controller,

@@ -12,6 +12,7 @@
 #include "voronav/core/error.hpp"
 #include "voronav/core/stepper.hpp"
 #include "voronav/exploration/internal/block_clock.hpp"
+#include "voronav/exploration/internal/right_of_way.hpp"
 #include "voronav/exploration/unstick.hpp"
 #include "voronav/field/distance_transform.hpp"
 #include "voronav/mapping/occupancy_map.hpp"
@@ -977,11 +978,21 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
             double wall_front = walls.range_max;
             for (float r : walls.ranges)
               wall_front = std::min(wall_front, static_cast<double>(r));
+            // ExplorationOptions::yield_to_held: also from a robot in front that is held up
+            // itself (internal/right_of_way.hpp).
             if (wall_front > front + 0.05)
-              for (std::size_t j = 0; j < i; ++j)
-                if (distance(agents[j]->body.true_pose().position, pose.position) <
-                    2.0 * body + 0.3)
+              for (std::size_t j = 0; j < agents.size(); ++j) {
+                const Agent& b = *agents[j];
+                const internal::RightOfWayPeer peer{
+                    static_cast<int>(j), b.body.true_pose().position,
+                    b.mode == AgentMode::kFollow && b.block.blocked_for() > 0.5 &&
+                        t >= b.back_off_until};
+                if (internal::backs_off_for(static_cast<int>(i), pose, peer, 2.0 * body + 0.3,
+                                            o.yield_to_held)) {
+                  if (j > i && t >= a.back_off_until) ++result.yields;
                   a.back_off_until = t + 2.0;
+                }
+              }
           }
           if (t < a.back_off_until) cmd = {-0.1, 0.0};
           a.since_progress += o.dt;
@@ -1045,6 +1056,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         a.wd_t = t;
         ++result.watchdog_events;
         log_event(t, a, "watchdog");
+        const bool had_goal = a.mode == AgentMode::kFollow;
         if (a.on_tree) {
           finish_leg(a, t);
         } else if (a.mode == AgentMode::kFollow) {
@@ -1055,8 +1067,12 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           a.unsticking = false;
         }
         a.reactive_until = t + 10.0;
-        if (o.method == ExplorationMethod::kTree ? o.unstick : o.frontier_unstick)
+        if (o.method == ExplorationMethod::kTree ? o.unstick : o.frontier_unstick) {
           unstick(unstick, i, t, true);
+        } else if (o.idle_unstick && !had_goal && o.method != ExplorationMethod::kTree) {
+          // ExplorationOptions::idle_unstick: a goalless robot moves to open space.
+          if (unstick(unstick, i, t, true)) ++result.idle_unsticks;
+        }
       }
       if (distance(now, a.anchor) > o.stall_distance) {
         a.anchor = now;
@@ -1133,6 +1149,7 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"leaf_goals\":" << r.leaf_goals << ",\"stalled_robots\":" << r.stalled_robots
      << ",\"watchdog_events\":" << r.watchdog_events << ",\"leg_replans\":" << r.leg_replans
      << ",\"escapes\":" << r.escapes << ",\"unsticks\":" << r.unsticks
+     << ",\"idle_unsticks\":" << r.idle_unsticks << ",\"yields\":" << r.yields
      << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;
   if (include_recording) {

@@ -110,6 +110,17 @@ struct ExplorationOptions {
   /// the robot out of the allocation until the watchdog fired again). After the block clock fix
   /// (issue 14, fifth pass) one partial tree-frontier run with it on still stalled a robot.
   bool frontier_unstick = false;
+  /// Ours (issue 14, lab_intel 8 robots): with frontier_unstick off, a frontier-method robot
+  /// WITHOUT a goal that the progress watchdog finds on one spot still drives the unstick route
+  /// (a goalless robot has no route to lose; lab_intel coordinated seed 1: a robot whose goals
+  /// were all banned turned on the spot in a corner for 52 s and stalled).
+  bool idle_unstick = true;
+  /// Ours (issue 14, lab_intel 8 robots): the guard's right of way also makes a robot back off
+  /// from a robot in front of it that is held up itself (its block clock running, not backing
+  /// off), whatever their indices; before, only the higher index backed off, so a robot
+  /// tailgating a lower-index robot that a door corner stopped boxed it in (frontier seed 4:
+  /// stalled).
+  bool yield_to_held = true;
   double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
   double goal_tolerance = 0.3;  ///< [m] a waypoint or goal counts as reached
   double clearance = 0.1;       ///< [m] added to the body radius when planning paths
@@ -198,9 +209,11 @@ struct ExplorationResult {
   int stalled_robots = 0;
   /// Goals given up by the progress watchdog (no progress for stall_time / 3).
   int watchdog_events = 0;
-  int leg_replans = 0;  ///< tree legs re-planned around robots (TreeLegReplan::kAroundRobots)
-  int escapes = 0;      ///< corridor escapes of the reactive controllers (AvoidEscape::kCorridor)
-  int unsticks = 0;     ///< unstick routes started (ExplorationOptions::unstick)
+  int leg_replans = 0;    ///< tree legs re-planned around robots (TreeLegReplan::kAroundRobots)
+  int escapes = 0;        ///< corridor escapes of the reactive controllers (AvoidEscape::kCorridor)
+  int unsticks = 0;       ///< unstick routes started (ExplorationOptions::unstick)
+  int idle_unsticks = 0;  ///< of those, by ExplorationOptions::idle_unstick
+  int yields = 0;         ///< back-offs from a held-up robot of higher index (yield_to_held)
   std::size_t reachable_free_cells = 0;
   ExplorationRecording recording;
 };

@@ -1,0 +1,92 @@
+// Tests of the runner's right of way (internal/right_of_way.hpp) and of the goalless robot's
+// unstick (ExplorationOptions::idle_unstick): the two jams traced on lab_intel with 8 robots
+// (issue 14, stop 19), each of which stalled a robot for 60 s.
+#include <gtest/gtest.h>
+
+#include "voronav/exploration/explorer.hpp"
+#include "voronav/exploration/internal/right_of_way.hpp"
+
+namespace voronav::exploration {
+namespace {
+
+constexpr double kContact = 2.0 * 0.12 + 0.3;  // the runner: two body radii + 0.3 m
+
+// lab_intel, 8 robots, frontier, seed 4, t = 130 s (the trace): robot 2 stood at a door corner
+// at (11.60, 31.43) m, stopped by its guard (the corner), and robot 1 stood 0.31 m behind it,
+// heading the same way into the same door, stopped by robot 2.
+const Pose2 kRobot1{{11.84, 31.62}, -2.58};
+const Pose2 kRobot2{{11.60, 31.43}, -1.97};
+
+TEST(RightOfWay, TailgatingRobotBacksOffFromAHeldUpRobotOfHigherIndex) {
+  const internal::RightOfWayPeer held2{2, kRobot2.position, true};
+  EXPECT_TRUE(internal::backs_off_for(1, kRobot1, held2, kContact, true));
+  // Before the fix (only the higher index backs off) neither moved: robot 1 stayed, robot 2
+  // had no room to turn away from the corner, and robot 2 was stalled at 175.7 s.
+  EXPECT_FALSE(internal::backs_off_for(1, kRobot1, held2, kContact, false));
+}
+
+TEST(RightOfWay, HeadOnPairStillResolvesByIndexAlone) {
+  // Head-on: 0.3 m apart, facing each other. The higher index backs off at once; it is then
+  // not "held" (it is backing off), so the lower index keeps going.
+  const Pose2 a{{0.0, 0.0}, 0.0}, b{{0.3, 0.0}, 3.14159};
+  EXPECT_TRUE(internal::backs_off_for(3, b, {0, a.position, false}, kContact, true));
+  EXPECT_FALSE(internal::backs_off_for(0, a, {3, b.position, false}, kContact, true));
+}
+
+TEST(RightOfWay, NoBackOffForARobotBehindFarAwayOrMoving) {
+  const internal::RightOfWayPeer behind{5, {-0.3, 0.0}, true};
+  EXPECT_FALSE(internal::backs_off_for(1, {{0.0, 0.0}, 0.0}, behind, kContact, true));
+  const internal::RightOfWayPeer far{5, {0.6, 0.0}, true};
+  EXPECT_FALSE(internal::backs_off_for(1, {{0.0, 0.0}, 0.0}, far, kContact, true));
+  const internal::RightOfWayPeer moving{5, {0.3, 0.0}, false};
+  EXPECT_FALSE(internal::backs_off_for(1, {{0.0, 0.0}, 0.0}, moving, kContact, true));
+  EXPECT_FALSE(internal::backs_off_for(5, {{0.3, 0.0}, 0.0}, {5, {0.0, 0.0}, true}, kContact,
+                                       true));  // itself
+}
+
+// Room A (3 x 3 m) and room B (6 x 3 m) joined by a 0.2 m slit: ground truth joins them (the
+// coverage counts room B), but no robot fits through, so once the frontiers at the slit are
+// banned the robot has no goal and searches reactively in room A.
+OccupancyGrid rooms_with_a_slit() {
+  GridGeometry g;
+  g.width = 100;
+  g.height = 34;
+  g.resolution = 0.1;
+  OccupancyGrid w(g, kOccupied);
+  for (int y = 2; y < 32; ++y) {
+    for (int x = 2; x < 32; ++x)
+      w[Cell{x, y}] = kFree;  // room A
+    for (int x = 34; x < 94; ++x)
+      w[Cell{x, y}] = kFree;  // room B
+  }
+  for (int x = 32; x < 34; ++x)
+    for (int y = 16; y < 18; ++y)
+      w[Cell{x, y}] = kFree;  // the slit, 2 cells
+  return w;
+}
+
+// lab_intel, 8 robots, coordinated, seed 1: every frontier left was banned by every robot, and a
+// goalless robot turned on the spot in a corner (rule 2 found no clear front) for 52 s: stalled.
+// Here the reactive search's obs_dist is raised so that rule 2 never finds a clear front in room
+// A (the turn on the spot of the trace, every time the robot has no goal).
+TEST(IdleUnstick, GoallessRobotTurningOnTheSpotIsMovedBeforeItStalls) {
+  ExplorationOptions o;
+  o.method = ExplorationMethod::kCoordinated;
+  o.robots = 1;
+  o.start = Vec2{1.0, 1.0};
+  o.time_limit = 200.0;
+  o.frontier_controller.obs_dist = 4.5;  // every front sector always "occupied" in room A
+  o.frontier_controller.approach_dist = 4.5;
+  const ExplorationResult on = run_exploration(rooms_with_a_slit(), o);
+  EXPECT_LT(on.coverage, 0.99);  // room B stays unknown: the stall rule is armed
+  EXPECT_GT(on.idle_unsticks, 0);
+  EXPECT_EQ(on.stalled_robots, 0);
+  o.idle_unstick = false;  // before the fix
+  const ExplorationResult off = run_exploration(rooms_with_a_slit(), o);
+  EXPECT_LT(off.coverage, 0.99);
+  EXPECT_EQ(off.idle_unsticks, 0);
+  EXPECT_EQ(off.stalled_robots, 1);
+}
+
+}  // namespace
+}  // namespace voronav::exploration
