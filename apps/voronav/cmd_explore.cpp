@@ -34,6 +34,7 @@ struct ExploreArgs {
   std::string frontier_unstick = "off";
   std::string idle_unstick = "on";
   std::string yield_to_held = "on";
+  std::string retry_banned = "on";
   std::uint64_t seed = 1;
   std::string start;
   std::filesystem::path out;
@@ -120,6 +121,7 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                 {"frontier_unstick", a.frontier_unstick},
                 {"idle_unstick", a.idle_unstick},
                 {"yield_to_held", a.yield_to_held},
+                {"retry_banned", a.retry_banned},
                 {"seed", a.seed},
                 {"stop_at_coverage", a.stop_at}};
   if (!a.start.empty()) {
@@ -159,6 +161,7 @@ void run(const ExploreArgs& a) {
   o.frontier_unstick = a.frontier_unstick == "on";
   o.idle_unstick = a.idle_unstick == "on";
   o.yield_to_held = a.yield_to_held == "on";
+  o.retry_banned = a.retry_banned == "on";
   o.seed = a.seed;
   o.stop_at_coverage = a.stop_at;
   if (!a.start.empty())
@@ -272,6 +275,11 @@ void setup(CLI::App& app) {
   cmd->add_option("--yield-to-held", args->yield_to_held,
                   "every method: a robot stopped by a robot in front that is held up itself "
                   "backs off whatever their indices (on, ours) or only from a lower index (off)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--retry-banned", args->retry_banned,
+                  "frontier, coordinated, tree-frontier: a robot left without a goal may take "
+                  "again the goals it gave up when blocked, once per 60 s (on, ours) or never")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   cmd->add_option("--time", args->time, "Simulated time limit [s]")

@@ -357,6 +357,8 @@ void bind_sim(py::module_& m) {
                      "frontier methods, goalless robots (CLI --idle-unstick on|off)")
       .def_readwrite("yield_to_held", &ex::ExplorationOptions::yield_to_held,
                      "every method (CLI --yield-to-held on|off)")
+      .def_readwrite("retry_banned", &ex::ExplorationOptions::retry_banned,
+                     "frontier methods (CLI --retry-banned on|off)")
       .def_readwrite("controller", &ex::ExplorationOptions::controller,
                      "tree: the reactive search's ControllerOptions")
       .def_readwrite("frontier_controller", &ex::ExplorationOptions::frontier_controller,

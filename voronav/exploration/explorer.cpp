@@ -42,10 +42,12 @@ struct Agent {
   std::size_t next = 0;
   internal::BlockClock block;  // wanted to drive forward but took no forward step (3 s rule)
   double since_progress = 0.0;
-  double reactive_until = 0.0;         // [s] a deadlocked robot searches reactively until then
-  std::optional<Vec2> goal;            // frontier goal
-  std::vector<Vec2> blacklist;         // unreachable frontier goals
-  bool on_tree = false;                // following a leg of a tree dispatch
+  double reactive_until = 0.0;  // [s] a deadlocked robot searches reactively until then
+  std::optional<Vec2> goal;     // frontier goal
+  std::vector<Vec2> blacklist;  // unreachable frontier goals
+  std::vector<Vec2> soft_bans;  // goals given up when blocked or without progress (retry_banned)
+  double ban_reset_t = -1e9;    // [s] when soft_bans were last cleared (retry_banned)
+  bool on_tree = false;         // following a leg of a tree dispatch
   std::deque<std::vector<Vec2>> legs;  // tree legs still to drive, each ending at a leaf
   bool tree_done = false;              // its dispatched leaves are done (or given up)
   bool goal_leaf = false;              // kTreeFrontier: the goal is a tree leaf
@@ -740,7 +742,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   const auto unmark = [&](const std::vector<std::size_t>& marked) {
     restore_free_cells(trav, marked);
   };
-  const auto replan_frontiers = [&] {
+  const auto replan_frontiers = [&](double t) {
     std::vector<std::size_t> active;
     for (std::size_t i = 0; i < agents.size(); ++i)
       if (!agents[i]->unsticking) active.push_back(i);
@@ -773,6 +775,8 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       const Vec2 pos = a.body.true_pose().position;
       const auto banned = [&](Vec2 tp) {
         for (const Vec2& b : a.blacklist)
+          if (distance(b, tp) < 0.5) return true;
+        for (const Vec2& b : a.soft_bans)
           if (distance(b, tp) < 0.5) return true;
 
         return false;
@@ -817,6 +821,14 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     for (std::size_t r = 0; r < active.size(); ++r) {
       Agent& a = *agents[active[r]];
       if (choice[r] < 0) {
+        // ExplorationOptions::retry_banned: no goal left for this robot, yet it gave goals up
+        // only because it was blocked or made no progress: it may try them again (at the next
+        // allocation), at most once per stall_time.
+        if (o.retry_banned && !a.soft_bans.empty() && t - a.ban_reset_t >= o.stall_time) {
+          a.soft_bans.clear();
+          a.ban_reset_t = t;
+          ++result.ban_resets;
+        }
         a.goal.reset();
         if (a.mode == AgentMode::kFollow && a.route.empty()) a.mode = AgentMode::kReactive;
         continue;
@@ -890,7 +902,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         next_tree_time = t + o.hybrid_tree_period;
       }
       if (t >= next_replan) {
-        replan_frontiers();
+        replan_frontiers(t);
         next_replan = t + o.replan_period;
       }
     } else if (tree_method) {
@@ -911,7 +923,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
               !agents[i]->unsticking)
             replan_from_robot(i, t);
     } else if (t >= next_replan) {
-      replan_frontiers();
+      replan_frontiers(t);
       next_replan = t + o.replan_period;
     }
   };
@@ -1007,7 +1019,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
             if (a.unsticking) {
               end_unstick(a, t);
             } else if (!a.on_tree) {
-              if (a.goal) a.blacklist.push_back(*a.goal);
+              if (a.goal) a.soft_bans.push_back(*a.goal);
               a.goal.reset();
               a.route.clear();
               a.mode = AgentMode::kReactive;
@@ -1060,7 +1072,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         if (a.on_tree) {
           finish_leg(a, t);
         } else if (a.mode == AgentMode::kFollow) {
-          if (a.goal) a.blacklist.push_back(*a.goal);
+          if (a.goal) a.soft_bans.push_back(*a.goal);
           a.goal.reset();
           a.route.clear();
           a.mode = AgentMode::kReactive;
@@ -1150,6 +1162,7 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"watchdog_events\":" << r.watchdog_events << ",\"leg_replans\":" << r.leg_replans
      << ",\"escapes\":" << r.escapes << ",\"unsticks\":" << r.unsticks
      << ",\"idle_unsticks\":" << r.idle_unsticks << ",\"yields\":" << r.yields
+     << ",\"ban_resets\":" << r.ban_resets
      << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;
   if (include_recording) {

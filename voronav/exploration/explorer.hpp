@@ -121,6 +121,13 @@ struct ExplorationOptions {
   /// tailgating a lower-index robot that a door corner stopped boxed it in (frontier seed 4:
   /// stalled).
   bool yield_to_held = true;
+  /// Ours (issue 14, depot 2 robots coordinated seed 3): frontier methods: a robot that the
+  /// allocation leaves without a goal forgets the goals it gave up only because it was blocked
+  /// (3 s rule) or made no progress (30 s, watchdog), at most once per stall_time, and may take
+  /// them again; goals it reached whose frontier stayed (unobservable) stay banned. Without it
+  /// both robots had banned every frontier left by 360 s and wandered reactively to 900 s at
+  /// 69.1 % coverage.
+  bool retry_banned = true;
   double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
   double goal_tolerance = 0.3;  ///< [m] a waypoint or goal counts as reached
   double clearance = 0.1;       ///< [m] added to the body radius when planning paths
@@ -214,6 +221,7 @@ struct ExplorationResult {
   int unsticks = 0;       ///< unstick routes started (ExplorationOptions::unstick)
   int idle_unsticks = 0;  ///< of those, by ExplorationOptions::idle_unstick
   int yields = 0;         ///< back-offs from a held-up robot of higher index (yield_to_held)
+  int ban_resets = 0;     ///< goalless robots that forgot their soft bans (retry_banned)
   std::size_t reachable_free_cells = 0;
   ExplorationRecording recording;
 };
