@@ -123,6 +123,12 @@ struct GaOptions {
   /// generation (crossover, mutation, 3-opt) draws from its own stream, seeded from the main one,
   /// and the children are made on this many threads; the result is the same for every value >= 1.
   int threads = 0;
+  /// threads == 0 and ThreeOptOrder::kPaper only: the children of a generation are made on this
+  /// many threads, each with the RNG state it has in the one-stream run (its parents, crossover and
+  /// mutation are drawn first on the main stream, in child order; the paper's 3-opt draws the same
+  /// number of moves whatever the orders, so the main stream skips past a child's 3-opt draws
+  /// without evaluating them). The result equals workers = 1 bit for bit (issue #16).
+  int workers = 1;
 };
 
 struct SearchOptions {
@@ -146,6 +152,11 @@ struct SearchResult {
   std::size_t three_opt_improvements = 0;  ///< 3-opt moves accepted (all children)
   std::size_t three_opt_local_optima = 0;  ///< children whose 3-opt ended at a local optimum
   std::size_t three_opt_exact_cuts = 0;    ///< random moves skipped: they cannot lower the makespan
+  /// The 3-opt's incremental evaluation (MoveEvaluator): robots resolved again over all moves, and
+  /// robots that lost only higher neighbours that were no blockers and so kept their delay
+  /// without a resolution.
+  std::size_t three_opt_robots_resolved = 0;
+  std::size_t three_opt_robots_kept_no_blocker = 0;
   /// Of three_opt_improvements, the moves taken by the delayed-robot sweep (kCriticalDelayed).
   std::size_t three_opt_delayed_improvements = 0;
   /// GaOptions::polish_sweeps: moves the final polish took, sweeps it ran, and the makespan of
