@@ -415,8 +415,6 @@ void run(const CoordArgs& a) {
       {"three_opt_improvements", r.search.three_opt_improvements},
       {"three_opt_local_optima", r.search.three_opt_local_optima},
       {"three_opt_exact_cuts", r.search.three_opt_exact_cuts},
-      {"three_opt_robots_resolved", r.search.three_opt_robots_resolved},
-      {"three_opt_robots_kept_no_blocker", r.search.three_opt_robots_kept_no_blocker},
       {"three_opt_delayed_improvements", r.search.three_opt_delayed_improvements},
       {"ga_polish_improvements", r.search.polish_improvements},
       {"ga_polish_sweeps", r.search.polish_sweeps},

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <string>
 
 #include "voronav/core/error.hpp"
@@ -137,12 +136,8 @@ namespace {
 /// no box moves i). A box whose D after the delays is <= epsilon stays so for every larger delay:
 /// it is dropped from later passes (it could never fire again, so the sequence of shifts, and the
 /// result, are unchanged). On an unresolvable box (D infinite) sets r.status / blocked.
-///
-/// Stops early (returning the delay reached) once travel + delay > cutoff: the delay only grows,
-/// so the robot's completion will exceed the cutoff whatever the remaining passes do.
 template <class ArcT>
-double resolve_robot(double delay, ArcT* act, std::size_t count, int& blocked_by, double travel,
-                     double cutoff) {
+double resolve_robot(double delay, ArcT* act, std::size_t count, int& blocked_by) {
   blocked_by = -1;
   // A pass after a shift can stop at the box that made the last shift, when nothing shifted the
   // robot before it: the boxes after that one were already checked at this delay in the previous
@@ -170,7 +165,6 @@ double resolve_robot(double delay, ArcT* act, std::size_t count, int& blocked_by
         delay += d;
         changed = true;
         last = keep - 1;
-        if (travel + delay > cutoff) return delay;
       }
     }
     count = keep;
@@ -189,9 +183,7 @@ struct HdArc {
 /// compares the two). Used by the full resolve(): on sparse networks (BM_ResolveRandom/100,
 /// 3 boxes per robot) it is 10-15 % faster, while on the dense MAPF networks of the GA's 3-opt
 /// the two take the same time (issue #16).
-template <class OnShift>
-double resolve_robot_sparse(double delay, HdArc* act, std::size_t count, int& blocked_by,
-                            OnShift on_shift) {
+double resolve_robot_sparse(double delay, HdArc* act, std::size_t count, int& blocked_by) {
   blocked_by = -1;
   bool changed = true;
   while (changed) {
@@ -210,7 +202,6 @@ double resolve_robot_sparse(double delay, HdArc* act, std::size_t count, int& bl
         }
         delay += d;
         changed = true;
-        on_shift(e.j);
       }
     }
     count = keep;
@@ -265,8 +256,7 @@ Resolution resolve_impl(const MdNetwork& net, std::span<const int> order,
           {j == b.b ? b.d : b.m, j == b.b ? b.m : b.d, r.delays[static_cast<std::size_t>(j)], j});
     }
     int blocked_by = -1;
-    const double delay =
-        resolve_robot_sparse(delay0, act.data(), act.size(), blocked_by, [](int) {});
+    const double delay = resolve_robot_sparse(delay0, act.data(), act.size(), blocked_by);
     if (blocked_by >= 0) {
       r.status = ResolveStatus::kNoDelaySchedule;
       r.blocked = i;
@@ -324,48 +314,16 @@ MoveEvaluator::MoveEvaluator(const MdNetwork& net) : net_(net) {
     most = std::max(most, arc_begin_[static_cast<std::size_t>(i) + 1] -
                               arc_begin_[static_cast<std::size_t>(i)]);
   act_.resize(static_cast<std::size_t>(most) + 1);
-  words_ = (static_cast<std::size_t>(n) + 63) / 64;
-  blockers_.assign(static_cast<std::size_t>(n) * words_, 0);
-  blocker_base_.assign(static_cast<std::size_t>(n), -1);
 }
 
-bool MoveEvaluator::blocker_in_base(int i, int j) {
-  const auto ui = static_cast<std::size_t>(i);
-  std::uint64_t* bits = blockers_.data() + ui * words_;
-  if (blocker_base_[ui] != base_id_) {
-    // Replay resolve()'s passes for robot i in the base order (its boxes with higher robots, in
-    // incident order) and record the robots whose boxes shifted it.
-    blocker_base_[ui] = base_id_;
-    std::fill(bits, bits + words_, 0);
-    std::vector<HdArc> act;
-    const int ri = rank_old_[ui];
-    for (int q = arc_begin_[ui]; q < arc_begin_[ui + 1]; ++q) {
-      const Arc& a = arcs_[static_cast<std::size_t>(q)];
-      const auto uj = static_cast<std::size_t>(a.j);
-      if (rank_old_[uj] < ri) act.push_back({a.m, a.d, base_delays_[uj], a.j});
-    }
-    int blocked_by = -1;
-    const double delay = resolve_robot_sparse(0.0, act.data(), act.size(), blocked_by, [&](int k) {
-      bits[static_cast<std::size_t>(k) / 64] |= std::uint64_t{1} << (k % 64);
-    });
-    if (blocked_by >= 0 || delay != base_delays_[ui]) {
-      std::fill(bits, bits + words_, ~std::uint64_t{0});  // not the base's resolution: all count
-    }
-  }
-  const auto uj = static_cast<std::size_t>(j);
-  return ((bits[uj / 64] >> (uj % 64)) & 1U) != 0;
-}
-
-const Resolution& MoveEvaluator::resolve_move(std::span<const int> base_order,
-                                              const Resolution& base, std::span<const int> order,
-                                              int from, int to, double cutoff) {
+Resolution MoveEvaluator::resolve_move(std::span<const int> base_order, const Resolution& base,
+                                       std::span<const int> order, int from, int to,
+                                       double cutoff) {
   const int n = net_.size();
   if (base.status != ResolveStatus::kOk || base.delays.size() != order.size() ||
       base_order.size() != order.size()) {
     last_resolved_ = n;
-    total_resolved_ += static_cast<std::size_t>(n);
-    res_ = resolve_impl(net_, order, {}, cutoff);
-    return res_;
+    return resolve_impl(net_, order, {}, cutoff);
   }
   from = std::clamp(from, 0, n);
   to = std::clamp(to, from, n);
@@ -384,42 +342,23 @@ const Resolution& MoveEvaluator::resolve_move(std::span<const int> base_order,
     if (rank_old_[static_cast<std::size_t>(o)] != p || rank_new_[static_cast<std::size_t>(c)] != p)
       throw Error("order", 0, "not a permutation: a robot appears twice");
   }
-  // A new base (order or delays, bitwise): the blocker sets are recomputed on first use.
-  const std::size_t nbytes = static_cast<std::size_t>(n) * sizeof(double);
-  if (base_order_.size() != base_order.size() ||
-      !std::equal(base_order.begin(), base_order.end(), base_order_.begin()) ||
-      std::memcmp(base_delays_.data(), base.delays.data(), nbytes) != 0) {
-    base_order_.assign(base_order.begin(), base_order.end());
-    base_delays_ = base.delays;
-    ++base_id_;
-  }
-  // dirty bit 0: resolve again; bit 1: lost a higher neighbour that was no blocker.
   std::fill(dirty_.begin(), dirty_.end(), 0);
+  // Robots in [from, to) with a neighbour on the other side than before.
   for (int p = from; p < to; ++p) {
-    const int i = order[static_cast<std::size_t>(p)];
-    const auto ui = static_cast<std::size_t>(i);
-    const int ro = rank_old_[ui];
-    for (int q = nbr_begin_[ui]; q < nbr_begin_[ui + 1]; ++q) {
-      const int j = nbrs_[static_cast<std::size_t>(q)];
-      const auto uj = static_cast<std::size_t>(j);
-      const bool above_now = rank_new_[uj] < p;
-      if (above_now == (rank_old_[uj] < ro)) continue;
-      if (above_now || blocker_in_base(i, j)) {  // gained a higher neighbour, or lost a blocker
-        dirty_[ui] = 1;
+    const auto i = static_cast<std::size_t>(order[static_cast<std::size_t>(p)]);
+    const int ro = rank_old_[i];
+    for (int q = nbr_begin_[i]; q < nbr_begin_[i + 1]; ++q) {
+      const auto j = static_cast<std::size_t>(nbrs_[static_cast<std::size_t>(q)]);
+      if ((rank_new_[j] < p) != (rank_old_[j] < ro)) {
+        dirty_[i] = 1;
         break;
       }
-      dirty_[ui] = 2;
     }
   }
-  Resolution& r = res_;
-  r.status = ResolveStatus::kOk;
-  r.blocked = -1;
-  r.blocked_by = -1;
-  r.cut = false;
-  r.delays.assign(base.delays.begin(), base.delays.end());
-  r.completion.assign(base.completion.begin(), base.completion.end());
+  Resolution r;
+  r.delays = base.delays;
+  r.completion = base.completion;
   last_resolved_ = 0;
-  int kept = 0;
   // Raw pointers: the loop below is the GA's hot spot (no reloads through the members).
   const Arc* arcs = arcs_.data();
   const int* arc_begin = arc_begin_.data();
@@ -434,10 +373,7 @@ const Resolution& MoveEvaluator::resolve_move(std::span<const int> base_order,
   for (int p = from; p < n; ++p) {
     const int i = order[static_cast<std::size_t>(p)];
     const auto ui = static_cast<std::size_t>(i);
-    if ((dirty[ui] & 1) == 0) {
-      kept += dirty[ui] >> 1;
-      continue;
-    }
+    if (!dirty[ui]) continue;
     ++last_resolved_;
     // The boxes shared with higher robots, in incident order (branch-free filter).
     std::size_t count = 0;
@@ -448,7 +384,7 @@ const Resolution& MoveEvaluator::resolve_move(std::span<const int> base_order,
       count += rank[j] < p ? 1U : 0U;
     }
     int blocked_by = -1;
-    const double delay = resolve_robot(0.0, act, count, blocked_by, travel[ui], cutoff);
+    const double delay = resolve_robot(0.0, act, count, blocked_by);
     delays[ui] = delay;
     completion[ui] = travel[ui] + delay;
     if (blocked_by >= 0) {
@@ -463,8 +399,6 @@ const Resolution& MoveEvaluator::resolve_move(std::span<const int> base_order,
       break;
     }
     if (completion[ui] > cutoff) {
-      total_resolved_ += static_cast<std::size_t>(last_resolved_);
-      total_kept_no_blocker_ += static_cast<std::size_t>(kept);
       cut(r);
       return r;
     }
@@ -475,8 +409,6 @@ const Resolution& MoveEvaluator::resolve_move(std::span<const int> base_order,
       }
     }
   }
-  total_resolved_ += static_cast<std::size_t>(last_resolved_);
-  total_kept_no_blocker_ += static_cast<std::size_t>(kept);
   finish(r);
   if (r.status == ResolveStatus::kOk && r.makespan > cutoff) cut(r);
   return r;

@@ -18,7 +18,6 @@
 #pragma once
 
 #include <cstddef>
-#include <cstdint>
 #include <span>
 #include <string_view>
 #include <utility>
@@ -104,30 +103,20 @@ struct Resolution {
 /// permutes only those); `base` = resolve(net, base_order). A robot's delay is a function of the
 /// set of its higher neighbours and their delays (resolve() visits its boxes in incident order,
 /// filtered by rank), so a robot is resolved again only when
-///  - it lies in [from, to), moved down and gained a higher neighbour, or
-///  - it lies in [from, to), moved up and lost a higher neighbour whose boxes shifted it when
-///    `base` was resolved (a blocker; the boxes that never shifted it can go: the passes over the
-///    other boxes make the same shifts at the same delays, so the delay stays the same bitwise;
-///    the blockers are found once per base order, by replaying that robot's resolution), or
+///  - it lies in [from, to) and some neighbour changed sides (above <-> below) with it, or
 ///  - a higher neighbour's delay differs from its delay in `base` (bitwise);
 /// every other robot keeps its delay from `base`. Stops (Resolution::cut, makespan infinity) as
-/// soon as a completion time exceeds `cutoff` (also in the middle of a robot's passes: its delay
-/// only grows): such an order cannot beat one of makespan <= cutoff. Otherwise the result equals
-/// resolve(net, order) bitwise (tested). The result lives in the evaluator until the next call.
-/// Throws voronav::Error when an order is not a permutation of the robots.
+/// soon as a completion time exceeds `cutoff`: such an order cannot beat one of makespan <= cutoff.
+/// Otherwise the result equals resolve(net, order) bitwise (tested). Throws voronav::Error when
+/// an order is not a permutation of the robots.
 class MoveEvaluator {
  public:
   explicit MoveEvaluator(const MdNetwork& net);
-  [[nodiscard]] const Resolution& resolve_move(std::span<const int> base_order,
-                                               const Resolution& base, std::span<const int> order,
-                                               int from, int to, double cutoff);
+  [[nodiscard]] Resolution resolve_move(std::span<const int> base_order, const Resolution& base,
+                                        std::span<const int> order, int from, int to,
+                                        double cutoff);
   /// Robots resolved again by the last resolve_move() (the others kept their delay).
   [[nodiscard]] int last_resolved() const { return last_resolved_; }
-  /// Totals over every resolve_move(): robots resolved again, and robots that moved up and lost a
-  /// higher neighbour but kept their delay without a resolution because no lost neighbour was a
-  /// blocker (the mechanism above; issue #16).
-  [[nodiscard]] std::size_t total_resolved() const { return total_resolved_; }
-  [[nodiscard]] std::size_t total_kept_no_blocker() const { return total_kept_no_blocker_; }
 
  private:
   struct Arc {
@@ -135,8 +124,6 @@ class MoveEvaluator {
     double m;  ///< (M, D) with j above, no delays
     double d;
   };
-  /// True when robot i's boxes with robot j shifted i in the resolution of the cached base order.
-  bool blocker_in_base(int i, int j);
   const MdNetwork& net_;
   std::vector<Arc> arcs_;                 ///< per robot, in incident order
   std::vector<int> arc_begin_;            ///< robot i: arcs_[arc_begin_[i], arc_begin_[i+1])
@@ -148,18 +135,7 @@ class MoveEvaluator {
     int j;
   };
   std::vector<Active> act_;  ///< scratch: the boxes with higher robots
-  Resolution res_;           ///< the last result
-  // The base order and delays the blocker sets belong to; per robot the blockers as a bit set of
-  // `words_` words, valid when blocker_base_[i] == base_id_ (computed on first use).
-  std::vector<int> base_order_;
-  std::vector<double> base_delays_;
-  int base_id_ = 0;
-  std::size_t words_ = 0;
-  std::vector<std::uint64_t> blockers_;
-  std::vector<int> blocker_base_;
   int last_resolved_ = 0;
-  std::size_t total_resolved_ = 0;
-  std::size_t total_kept_no_blocker_ = 0;
 };
 
 /// An arc of the network of a given order: from `high` to `low`, (M, D) after the delays.

@@ -335,11 +335,11 @@ class Ga {
     // makespan exceeds the current one (it cannot be better then).
     full_order(cand, cand_order);
     ++evaluations_;
-    const Resolution& r =
+    Resolution r =
         evaluator_.resolve_move(base_order, ind.res, cand_order, from, to, ind.res.makespan + kEps);
     if (r.cut || !better(r, ind.res)) return false;
     ind.seq.swap(cand);
-    ind.res = r;
+    ind.res = std::move(r);
     base_order.swap(cand_order);
     ++improvements_;
     return true;
@@ -736,12 +736,6 @@ class Ga {
     out.three_opt_improvements = improvements_;
     out.three_opt_local_optima = local_optima_;
     out.three_opt_exact_cuts = cut_moves_;
-    out.three_opt_robots_resolved = evaluator_.total_resolved();
-    out.three_opt_robots_kept_no_blocker = evaluator_.total_kept_no_blocker();
-    for (const auto& h : helpers) {
-      out.three_opt_robots_resolved += h->evaluator_.total_resolved();
-      out.three_opt_robots_kept_no_blocker += h->evaluator_.total_kept_no_blocker();
-    }
     out.three_opt_delayed_improvements = delayed_improvements_;
     return out;
   }

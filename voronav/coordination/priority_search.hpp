@@ -152,11 +152,6 @@ struct SearchResult {
   std::size_t three_opt_improvements = 0;  ///< 3-opt moves accepted (all children)
   std::size_t three_opt_local_optima = 0;  ///< children whose 3-opt ended at a local optimum
   std::size_t three_opt_exact_cuts = 0;    ///< random moves skipped: they cannot lower the makespan
-  /// The 3-opt's incremental evaluation (MoveEvaluator): robots resolved again over all moves, and
-  /// robots that lost only higher neighbours that were no blockers and so kept their delay
-  /// without a resolution.
-  std::size_t three_opt_robots_resolved = 0;
-  std::size_t three_opt_robots_kept_no_blocker = 0;
   /// Of three_opt_improvements, the moves taken by the delayed-robot sweep (kCriticalDelayed).
   std::size_t three_opt_delayed_improvements = 0;
   /// GaOptions::polish_sweeps: moves the final polish took, sweeps it ran, and the makespan of
