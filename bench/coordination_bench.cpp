@@ -16,10 +16,12 @@
 #include <cstring>
 #include <iostream>
 #include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "voronav/coordination/coordinator.hpp"
+#include "voronav/coordination/internal/critical_moves.hpp"
 #include "voronav/coordination/paper_networks.hpp"
 
 namespace co = voronav::coordination;
@@ -80,6 +82,52 @@ void BM_Ga(benchmark::State& state) {
     benchmark::DoNotOptimize(co::search_priority(net, so));
 }
 BENCHMARK(BM_Ga)->Arg(30)->Arg(100)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// One evaluation of the paper 3-opt's incremental resolution (MoveEvaluator::resolve_move, the
+// GA's hot spot, issue #16): n robots, `points` shared points of the section 5.1 random network,
+// a fixed random base order and 1,024 random segment moves (the paper's draw) evaluated in turn
+// with the GA's cutoff (base makespan + 1e-9). Counters: robots resolved per move, moves cut.
+void BM_MoveEvaluator(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const co::MdNetwork net = co::random_network(n, static_cast<int>(state.range(1)), 1);
+  std::mt19937_64 rng(7);
+  std::vector<int> base_order(static_cast<std::size_t>(n));
+  std::iota(base_order.begin(), base_order.end(), 0);
+  std::shuffle(base_order.begin(), base_order.end(), rng);
+  const co::Resolution base = co::resolve(net, base_order);
+  struct Move {
+    std::vector<int> cand;
+    int from, to;
+  };
+  std::vector<Move> moves;
+  co::internal::SegmentMove mv;
+  while (moves.size() < 1024) {
+    if (!co::internal::random_segment_move(n, rng, mv)) continue;
+    Move m;
+    co::internal::apply_segment_move(base_order, mv, m.cand, m.from, m.to);
+    moves.push_back(std::move(m));
+  }
+  co::MoveEvaluator ev(net);
+  std::size_t k = 0, resolved = 0, cut = 0, count = 0;
+  for (auto _ : state) {
+    const Move& m = moves[k++ % moves.size()];
+    const co::Resolution r =
+        ev.resolve_move(base_order, base, m.cand, m.from, m.to, base.makespan + 1e-9);
+    benchmark::DoNotOptimize(r.makespan);
+    resolved += static_cast<std::size_t>(ev.last_resolved());
+    cut += r.cut ? 1U : 0U;
+    ++count;
+  }
+  state.counters["resolved_per_move"] =
+      static_cast<double>(resolved) / static_cast<double>(std::max<std::size_t>(count, 1));
+  state.counters["cut_fraction"] =
+      static_cast<double>(cut) / static_cast<double>(std::max<std::size_t>(count, 1));
+}
+BENCHMARK(BM_MoveEvaluator)
+    ->Args({30, 60})
+    ->Args({100, 200})
+    ->Args({100, 800})
+    ->Unit(benchmark::kMicrosecond);
 
 // The 3-opt neighbourhood (issue #16): the paper's random moves (order 0) against critical-first
 // (order 1) and critical-delayed (order 2) on the section 5.1 random network of n robots and 2n

@@ -48,6 +48,7 @@ struct CoordArgs {
   int ga_three_opt_depth = 2;
   int ga_three_opt_patience = 0;
   int ga_threads = 0;
+  int ga_workers = 1;
   int ga_population = 0;
   int ga_stall = 0;
   int ga_delayed_gate = 0;
@@ -361,6 +362,7 @@ void run(const CoordArgs& a) {
   opt.search.ga.three_opt_depth = a.ga_three_opt_depth;
   opt.search.ga.three_opt_patience = a.ga_three_opt_patience;
   opt.search.ga.threads = a.ga_threads;
+  opt.search.ga.workers = a.ga_workers;
   opt.search.ga.population = a.ga_population;
   opt.search.ga.stall_generations = a.ga_stall;
   opt.search.ga.delayed_gate = a.ga_delayed_gate;
@@ -537,6 +539,11 @@ void setup(CLI::App& app) {
                   "GA: 0 = one random stream (earlier results); N >= 1 = per-child streams, the "
                   "children of a generation on N threads (same result for every N >= 1)")
       ->check(CLI::Range(0, 64))
+      ->capture_default_str();
+  cmd->add_option("--ga-workers", a->ga_workers,
+                  "GA with --ga-threads 0 and the paper's 3-opt: make the children of a "
+                  "generation on W threads with the same result as W = 1 (the one-stream run)")
+      ->check(CLI::Range(1, 64))
       ->capture_default_str();
   cmd->add_option("--ga-stall", a->ga_stall,
                   "GA: 0 = the paper's stop rule (two rounds of 20 crossovers with the same best "

@@ -8,6 +8,7 @@
 
 #include "voronav/coordination/collision_map.hpp"
 #include "voronav/coordination/coordinator.hpp"
+#include "voronav/coordination/internal/critical_moves.hpp"
 #include "voronav/coordination/internal/ga_operators.hpp"
 #include "voronav/coordination/md_network.hpp"
 #include "voronav/coordination/paper_networks.hpp"
@@ -519,6 +520,52 @@ TEST(MdNetwork, MoveEvaluatorEqualsFullResolveBitwise) {
   EXPECT_GT(kept, 10);
   EXPECT_GT(blocked, 10);
   EXPECT_GT(partial, 100);
+}
+
+// The incremental evaluation on dense networks (as the MAPF maps give: ~8 boxes per robot,
+// several per pair) over thousands of random segment moves of a 3-opt walk, with the GA's cutoff
+// and without: bitwise the full resolve(), and most moves re-resolve only part of the order.
+TEST(MdNetwork, MoveEvaluatorEqualsFullResolveOnDenseNetworks) {
+  int partial = 0;
+  int compared = 0;
+  for (std::uint64_t seed = 11; seed <= 16; ++seed) {
+    const int n = 40;
+    const MdNetwork net = random_network(n, 160, seed);
+    MoveEvaluator ev(net);
+    std::mt19937_64 rng(seed);
+    std::vector<int> order(static_cast<std::size_t>(n));
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), rng);
+    Resolution base = resolve(net, order);
+    internal::SegmentMove mv;
+    std::vector<int> cand;
+    int from = 0, to = 0;
+    for (int it = 0; it < 1500; ++it) {
+      if (!internal::random_segment_move(n, rng, mv)) continue;
+      internal::apply_segment_move(order, mv, cand, from, to);
+      const Resolution full = resolve(net, cand);
+      const Resolution r = ev.resolve_move(order, base, cand, from, to, kInfinity);
+      ASSERT_EQ(r.status, full.status) << seed << " move " << it;
+      ASSERT_EQ(r.delays, full.delays) << seed << " move " << it;
+      ASSERT_EQ(r.completion, full.completion);
+      ASSERT_EQ(r.sum_of_arrivals, full.sum_of_arrivals);
+      partial += ev.last_resolved() < n - from ? 1 : 0;
+      const Resolution c = ev.resolve_move(order, base, cand, from, to, base.makespan + 1e-9);
+      if (full.status == ResolveStatus::kOk) {
+        ASSERT_EQ(c.cut, full.makespan > base.makespan + 1e-9) << seed << " move " << it;
+        if (!c.cut) {
+          ASSERT_EQ(c.delays, full.delays);
+        }
+      }
+      ++compared;
+      if (full.status == ResolveStatus::kOk && better(full, base)) {
+        order = cand;
+        base = full;
+      }
+    }
+  }
+  EXPECT_GT(compared, 5000);
+  EXPECT_GT(partial, 1000);
 }
 
 // The GA operators shared by the delay GA and the SIPP GA (internal/ga_operators.hpp).

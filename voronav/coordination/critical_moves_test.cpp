@@ -176,6 +176,41 @@ TEST(CriticalMoves, ExactCutNeverSkipsAMakespanImprovement) {
 
 // The GA with the critical-first 3-opt: the same seed gives the same order; the result is a
 // permutation resolved exactly, never worse than the EDF seed, and the local search really ran.
+// GaOptions::workers (issue #16): the one-stream paper GA with its children on 2 or 3 threads
+// gives the result of the sequential run bit for bit (order, delays, evaluations, every round),
+// and workers > 1 is refused where the stream cannot be skipped ahead.
+TEST(CriticalMoves, GaWorkersGiveTheOneStreamResult) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const MdNetwork net = random_network(20, 60, seed);
+    SearchOptions so;
+    so.edf_reduction = false;
+    so.ga.seed = seed;
+    so.ga.three_opt_iterations = 150;
+    const auto one = search_priority(net, so);
+    for (const int w : {2, 3}) {
+      so.ga.workers = w;
+      const auto r = search_priority(net, so);
+      EXPECT_EQ(r.order, one.order) << seed << " workers " << w;
+      EXPECT_EQ(r.evaluations, one.evaluations);
+      EXPECT_EQ(r.best_per_round, one.best_per_round);
+      EXPECT_EQ(r.three_opt_improvements, one.three_opt_improvements);
+      EXPECT_EQ(r.resolution.delays, one.resolution.delays);
+    }
+    EXPECT_GE(one.generations, 2);
+    EXPECT_GT(one.three_opt_improvements, 0U);
+  }
+  SearchOptions bad;
+  bad.ga.workers = 2;
+  bad.ga.threads = 1;
+  EXPECT_THROW((void)search_priority(random_network(10, 30, 1), bad), Error);
+  bad.ga.threads = 0;
+  bad.ga.three_opt_order = ThreeOptOrder::kCriticalFirst;
+  EXPECT_THROW((void)search_priority(random_network(10, 30, 1), bad), Error);
+  bad.ga.three_opt_order = ThreeOptOrder::kPaper;
+  bad.ga.workers = 0;
+  EXPECT_THROW((void)search_priority(random_network(10, 30, 1), bad), Error);
+}
+
 TEST(CriticalMoves, GaCriticalFirstIsDeterministicAndNeverWorseThanTheSeed) {
   EXPECT_EQ(parse_three_opt_order("critical-first"), ThreeOptOrder::kCriticalFirst);
   EXPECT_EQ(parse_three_opt_order("paper"), ThreeOptOrder::kPaper);

@@ -551,6 +551,50 @@ class Ga {
     });
   }
 
+  /// Advances the RNG past the draws of three_opt() in kPaper mode (three_opt_random() without
+  /// until_feasible draws three_opt_budget() segment moves whatever the orders and the results).
+  void skip_paper_three_opt_draws() {
+    if (n_ < 3 || o_.three_opt_iterations < 0) return;
+    internal::SegmentMove mv;
+    const int budget = three_opt_budget();
+    for (int it = 0; it < budget; ++it)
+      (void)internal::random_segment_move(n_, rng_, mv);
+  }
+
+  /// GaOptions::workers: the children of one generation of the one-stream GA (threads == 0,
+  /// kPaper) on worker threads, bit for bit the children of the sequential loop in run(). Each
+  /// child's parents, crossover and mutation are drawn here in child order; its 3-opt then runs
+  /// on helper c mod T from a copy of the stream taken just before its 3-opt draws, while the main
+  /// stream skips those draws for the next child.
+  void children_same_stream(const std::vector<Individual>& pop, int pop_size,
+                            std::vector<Individual>& children,
+                            std::vector<std::unique_ptr<Ga>>& helpers) {
+    const int count = o_.crossovers_per_generation;
+    std::vector<std::vector<int>> seqs(static_cast<std::size_t>(count));
+    std::vector<internal::GaRng> streams(static_cast<std::size_t>(count));
+    for (int c = 0; c < count; ++c) {
+      const int a = uniform(0, pop_size - 1);
+      int b = uniform(0, pop_size - 2);
+      if (b >= a) ++b;
+      std::vector<int> child = ops_.dpx(pop[static_cast<std::size_t>(a)].seq,
+                                        pop[static_cast<std::size_t>(b)].seq, rng_);
+      if (unit() < o_.mutation_rate)
+        child = ops_.mutate(child, o_.mutation_min_edges, o_.mutation_max_edges, rng_);
+      seqs[static_cast<std::size_t>(c)] = std::move(child);
+      streams[static_cast<std::size_t>(c)] = rng_;
+      skip_paper_three_opt_draws();
+    }
+    children.assign(static_cast<std::size_t>(count), Individual{});
+    internal::run_strided(count, static_cast<int>(helpers.size()), [&](int t, int c) {
+      const auto uc = static_cast<std::size_t>(c);
+      Ga& h = *helpers[static_cast<std::size_t>(t)];
+      h.rng_ = streams[uc];
+      Individual ind = h.make(std::move(seqs[uc]));
+      h.three_opt(ind, nullptr);
+      children[uc] = std::move(ind);
+    });
+  }
+
   SearchResult run(const std::vector<int>& seed_order) {
     SearchResult out;
     out.urgent_group = searched_;
@@ -583,7 +627,8 @@ class Ga {
     // Per-child RNG streams (threads >= 1): one Ga per thread makes children (its own RNG, reseeded
     // per child, and its own MoveEvaluator scratch).
     std::vector<std::unique_ptr<Ga>> helpers;
-    for (int t = 0; t < o_.threads; ++t)
+    const bool same_stream = o_.threads == 0 && o_.workers > 1;
+    for (int t = 0; t < (same_stream ? o_.workers : o_.threads); ++t)
       helpers.push_back(std::make_unique<Ga>(net_, searched_, suffix_, o_));
     double prev = pop.front().res.makespan;
     const int elite = std::max(1, static_cast<int>(std::ceil(o_.elitism * pop_size)));
@@ -595,8 +640,11 @@ class Ga {
       if (o_.threads > 0) {
         children_on_threads(pop, pop_size, children, helpers);
         crossovers += o_.crossovers_per_generation;
+      } else if (same_stream) {
+        children_same_stream(pop, pop_size, children, helpers);
+        crossovers += o_.crossovers_per_generation;
       }
-      for (int c = 0; c < o_.crossovers_per_generation && o_.threads == 0; ++c) {
+      for (int c = 0; c < o_.crossovers_per_generation && o_.threads == 0 && !same_stream; ++c) {
         const int a = uniform(0, pop_size - 1);
         int b = uniform(0, pop_size - 2);
         if (b >= a) ++b;
@@ -727,6 +775,14 @@ void check_ga_options(const GaOptions& o) {
   if (o.three_opt_depth < 0) bad("three_opt_depth", "expected >= 0");
   if (o.three_opt_patience < 0) bad("three_opt_patience", "expected >= 0");
   if (o.threads < 0 || o.threads > 64) bad("threads", "expected 0..64");
+  if (o.workers < 1 || o.workers > 64) {
+    bad("workers", "expected 1..64, got " + std::to_string(o.workers));
+  }
+  if (o.workers > 1 && (o.threads != 0 || o.three_opt_order != ThreeOptOrder::kPaper)) {
+    bad("workers", "workers > 1 (got " + std::to_string(o.workers) +
+                       ") needs threads = 0 and the paper's 3-opt order (the other orders draw "
+                       "depending on the search, so their stream cannot be skipped ahead)");
+  }
 }
 
 }  // namespace

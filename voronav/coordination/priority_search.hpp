@@ -123,6 +123,12 @@ struct GaOptions {
   /// generation (crossover, mutation, 3-opt) draws from its own stream, seeded from the main one,
   /// and the children are made on this many threads; the result is the same for every value >= 1.
   int threads = 0;
+  /// threads == 0 and ThreeOptOrder::kPaper only: the children of a generation are made on this
+  /// many threads, each with the RNG state it has in the one-stream run (its parents, crossover and
+  /// mutation are drawn first on the main stream, in child order; the paper's 3-opt draws the same
+  /// number of moves whatever the orders, so the main stream skips past a child's 3-opt draws
+  /// without evaluating them). The result equals workers = 1 bit for bit (issue #16).
+  int workers = 1;
 };
 
 struct SearchOptions {
