@@ -93,11 +93,13 @@ for s, j in data.items():
 print()
 print("Repair per change run (decentralized; absent in JSON from before stop 17: `?`): Repairs "
       "started by the source / by all robots, detours sent back by answerers, repaired routes that "
-      "reached the source / that it refused as blocked in its own map, Repairs executed, success.")
+      "reached the source / that it refused as blocked in its own map, Repairs the source sent again "
+      "with cells it learned / the most cells one of its Repairs carried (repair_share_met_blocks), "
+      "Repairs executed, success.")
 print()
 print("| scenario | run | source asked / all asked | answers sent | reached source / refused | "
-      "executed | arrived | searches |")
-print("|---|---|---|---|---|---|---|---|")
+      "re-asks / most cells carried | executed | arrived | searches |")
+print("|---|---|---|---|---|---|---|---|---|")
 g = lambda r, k: r.get(k, "?")
 for s, j in data.items():
     for r in j["decentralized"]["per_run"]:
@@ -105,7 +107,8 @@ for s, j in data.items():
             continue
         print(f"| {s} | {r['run']} | {g(r, 'source_repair_requests')} / {g(r, 'repair_requests')} | "
               f"{g(r, 'repair_answers')} | {g(r, 'repair_answers_received')} / "
-              f"{g(r, 'repair_answers_refused')} | {r['repairs_executed']} | "
+              f"{g(r, 'repair_answers_refused')} | {g(r, 'repair_reasks')} / {g(r, 'repair_cells_max')} | "
+              f"{r['repairs_executed']} | "
               f"{'yes' if r['success'] else 'no'} | {r['search_attempts']} |")
 print()
 print("Change runs: changes placed / on the route (centralized, decentralized), Repairs executed "

@@ -453,6 +453,8 @@ void run(const NetsimArgs& a) {
                          {"repair_answers", r.repair_answers},
                          {"repair_answers_received", r.repair_answers_received},
                          {"repair_answers_refused", r.repair_answers_refused},
+                         {"repair_reasks", r.repair_reasks},
+                         {"repair_cells_max", r.repair_cells_max},
                          {"changes", sc.changes.size()},
                          {"changes_applied", r.changes_applied},
                          {"changes_on_route", r.changes_on_route},

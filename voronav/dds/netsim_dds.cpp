@@ -82,6 +82,8 @@ std::string metrics_to_json(const sim::NetSimMetrics& m) {
                   {"repair_answers", m.repair_answers},
                   {"repair_answers_received", m.repair_answers_received},
                   {"repair_answers_refused", m.repair_answers_refused},
+                  {"repair_reasks", m.repair_reasks},
+                  {"repair_cells_max", m.repair_cells_max},
                   {"changes_on_route", m.changes_on_route},
                   {"changes_applied", m.changes_applied},
                   {"point_searches", m.point_searches},
@@ -132,6 +134,8 @@ sim::NetSimMetrics metrics_from_json(const std::string& text) {
     m.repair_answers = j.value("repair_answers", 0);
     m.repair_answers_received = j.value("repair_answers_received", 0);
     m.repair_answers_refused = j.value("repair_answers_refused", 0);
+    m.repair_reasks = j.value("repair_reasks", 0);
+    m.repair_cells_max = j.value("repair_cells_max", 0);
     m.changes_on_route = j.at("changes_on_route").get<int>();
     m.changes_applied = j.at("changes_applied").get<int>();
     m.point_searches = j.value("point_searches", std::uint64_t{0});

@@ -101,6 +101,14 @@ std::vector<Vec2> RobotAgent::blocking_cells(const std::vector<VoronoiPoint>& pa
 std::vector<Vec2> RobotAgent::changed_cells(const std::vector<VoronoiPoint>& path,
                                             std::vector<Vec2> cells) {
   if (!opt().repair_share_changed) return cells;
+  return occupied_in_discs(path, std::move(cells));
+}
+
+/// `cells` with every cell this robot knows occupied inside the free disc of a point of `path`
+/// (the clearance its maker sensed): where this robot's map contradicts the makers' maps, i.e.
+/// the changes they have not seen. Sorted, each once.
+std::vector<Vec2> RobotAgent::occupied_in_discs(const std::vector<VoronoiPoint>& path,
+                                                std::vector<Vec2> cells) {
   const auto& g = r_.map.world();
   std::vector<Cell> out;
   for (Vec2 q : cells)
@@ -145,6 +153,66 @@ void RobotAgent::learn_blocks(const std::vector<Vec2>& blocked) {
     if (const auto br = find_break(path, 0))
       relay_break_ = std::pair{path[br->first].position, path[br->second].position};
   }
+}
+
+/// repair_share_met_blocks (source): adds `cells` (cell centres) to the cells it knows blocked at
+/// the changes it has met; returns how many were new.
+std::size_t RobotAgent::add_met_blocks(const std::vector<Vec2>& cells) {
+  const auto& g = r_.map.world();
+  const auto before = met_blocks_.size();
+  for (Vec2 q : cells)
+    if (const auto c = g.world_to_cell(q)) met_blocks_.push_back(*c);
+  auto by_row = [](Cell a, Cell b) { return a.y != b.y ? a.y < b.y : a.x < b.x; };
+  std::sort(met_blocks_.begin(), met_blocks_.end(), by_row);
+  met_blocks_.erase(std::unique(met_blocks_.begin(), met_blocks_.end()), met_blocks_.end());
+  report_.metrics.work += cells.size() + met_blocks_.size();
+  return met_blocks_.size() - before;
+}
+
+/// repair_share_met_blocks: `cells` (what a Repair carries of its own break) with the cells the
+/// source knows blocked at every change it has met, sorted, each once.
+std::vector<Vec2> RobotAgent::with_met_blocks(std::vector<Vec2> cells) const {
+  if (!opt().repair_share_met_blocks || met_blocks_.empty()) return cells;
+  const auto& g = r_.map.world();
+  std::vector<Cell> all = met_blocks_;
+  for (Vec2 q : cells)
+    if (const auto c = g.world_to_cell(q)) all.push_back(*c);
+  std::sort(all.begin(), all.end(),
+            [](Cell a, Cell b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  cells.clear();
+  for (Cell c : all)
+    cells.push_back(g.cell_center(c));
+  return cells;
+}
+
+/// repair_share_met_blocks (source): whether `cells` holds a cell the Repair `m` does not carry.
+bool RobotAgent::tells_more(const RepairMessage& m, const std::vector<Vec2>& cells) const {
+  const auto& g = r_.map.world();
+  std::vector<Cell> carried;
+  for (Vec2 q : m.blocked)
+    if (const auto c = g.world_to_cell(q)) carried.push_back(*c);
+  return std::any_of(cells.begin(), cells.end(), [&](Vec2 q) {
+    const auto c = g.world_to_cell(q);
+    return c && std::find(carried.begin(), carried.end(), *c) == carried.end();
+  });
+}
+
+/// repair_share_met_blocks (source): an answer it refused (`rest`: its position, then the
+/// answer's route ahead) crosses cells its map knows blocked and its answerer did not. It learns
+/// those cells (blocking_cells of every broken move) and, when its Repair did not carry them all,
+/// asks again (check_source_route: a new Repair, new Num, from its current map), so the
+/// answerers mark them and plan round them.
+void RobotAgent::learn_from_refusal(const std::vector<VoronoiPoint>& rest) {
+  if (!opt().repair_share_met_blocks) return;
+  const auto br = find_break(rest, 0);
+  if (!br) return;  // refused by seen_near_block alone: no cell to tell
+  // The cells beside the refused moves, and every cell it knows occupied inside the free disc of
+  // a point of the answer (its maker saw them free): the whole change as the source knows it,
+  // not only the cells the refused move touched (the next answer would pass a cell beside them).
+  const auto cells = occupied_in_discs(rest, blocking_cells(rest, *br));
+  add_met_blocks(cells);
+  if (repair_out_ && tells_more(*repair_out_, cells)) check_source_route();
 }
 
 /// repair_check_seen: whether the moves of `ahead` (from the source's position) keep clear of
@@ -441,6 +509,11 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
     const std::vector<VoronoiPoint> ahead(whole.begin() + 1, whole.end());
     if (!free_ahead(ahead)) {
       ++report_.repair_answers_refused;
+      if (opt().repair_share_met_blocks) {
+        std::vector<VoronoiPoint> rest{VoronoiPoint{s.pos, 1.0f, 0.0f}};
+        rest.insert(rest.end(), ahead.begin(), ahead.end());
+        learn_from_refusal(rest);
+      }
 #ifdef VORONAV_NS_TRACE
       std::vector<VoronoiPoint> rest{VoronoiPoint{s.pos, 1.0f, 0.0f}};
       rest.insert(rest.end(), ahead.begin(), ahead.end());
@@ -468,9 +541,15 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
       std::vector<VoronoiPoint> n(route_.begin(), route_.begin() + static_cast<std::ptrdiff_t>(i));
       n.insert(n.end(), whole.begin(), whole.end());
       const std::size_t next = std::max<std::size_t>(done, 1) - 1;
-      if (!free_ahead(std::vector<VoronoiPoint>(
-              n.begin() + static_cast<std::ptrdiff_t>(std::min(next, n.size())), n.end()))) {
+      const std::vector<VoronoiPoint> ahead(
+          n.begin() + static_cast<std::ptrdiff_t>(std::min(next, n.size())), n.end());
+      if (!free_ahead(ahead)) {
         ++report_.repair_answers_refused;
+        if (opt().repair_share_met_blocks) {
+          std::vector<VoronoiPoint> rest{VoronoiPoint{s.pos, 1.0f, 0.0f}};
+          rest.insert(rest.end(), ahead.begin(), ahead.end());
+          learn_from_refusal(rest);
+        }
         NS_DEBUG("t=%.1f source ignores robot %u's relay detour (blocked in its map)\n", now_,
                  from.value);
         return false;
@@ -512,7 +591,8 @@ void RobotAgent::check_source_route() {
            br->first, br->second, rest.size());
   ++report_.repairs;
   const std::uint32_t to = rejoin_past_block(rest, *br);
-  if (opt().repair_share_blocks || opt().repair_check_seen) block_seen_ = blocking_cells(rest, *br);
+  if (opt().repair_share_blocks || opt().repair_check_seen || opt().repair_share_met_blocks)
+    block_seen_ = blocking_cells(rest, *br);
   const std::vector<VoronoiPoint> sensed = rest;  // the clearances its makers sensed
   shrink_to_map(rest);                            // as in check_relay_route
   auto fixed = detour(rest, br->first, to);
@@ -527,7 +607,14 @@ void RobotAgent::check_source_route() {
     repair_done();
     return;
   }
-  if (repair_out_) return;  // its Repair is out: wait for an answer (re-sent by repair_timers)
+  // Its Repair is out: wait for an answer (re-sent by repair_timers). With
+  // repair_share_met_blocks it asks again when it now knows blocked cells that Repair did not
+  // carry (it met more of the change while it waited, or an answer it refused crossed them): the
+  // old Repair's break and cells are out of date.
+  const bool reask = repair_out_.has_value();
+  if (reask &&
+      !(opt().repair_share_met_blocks && tells_more(*repair_out_, with_met_blocks(block_seen_))))
+    return;
   RepairMessage m;
   m.source = s.id;
   m.num = (s.id.value << 16) | (++s.repair_counter & 0xFFFFu);
@@ -536,9 +623,21 @@ void RobotAgent::check_source_route() {
   m.broken_from = br->first;
   m.broken_to = to;
   if (opt().repair_share_blocks) m.blocked = changed_cells(sensed, block_seen_);
+  if (opt().repair_share_met_blocks) {
+    // Every change it has met, not only this break (the answerers may not have seen them).
+    add_met_blocks(block_seen_);
+    m.blocked = with_met_blocks(std::move(m.blocked));
+    report_.repair_cells_max =
+        std::max(report_.repair_cells_max, static_cast<int>(m.blocked.size()));
+  }
   s.repairs_seen.insert(m.num);
   ++report_.repair_requests;
-  log_repair(false, "is blocked and asks its neighbours (Repair message)");
+  if (reask) {
+    ++report_.repair_reasks;
+    log_repair(false, "asks again with the blocked cells it learned (Repair message)");
+  } else {
+    log_repair(false, "is blocked and asks its neighbours (Repair message)");
+  }
   repair_out_ = m;
   repair_heard_.clear();
   for (const auto& n : transport_.nearby(s.id))

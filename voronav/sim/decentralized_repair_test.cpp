@@ -10,6 +10,7 @@
 #include "voronav/network/sim_radio.hpp"
 #include "voronav/sim/netsim.hpp"
 #include "voronav/sim/robot_agent.hpp"
+#include "voronav/sim/scenario_file.hpp"
 #include "voronav/sim/test_halls.hpp"
 
 namespace voronav::sim {
@@ -213,6 +214,9 @@ TEST(DecentralizedRepair, AnUnansweredRepairIsNotResentToTheSameNeighbours) {
     o.method = Method::kDecentralized;
     o.record = true;
     o.repair_resend_new_only = new_only;
+    // Each of the two rules alone: with repair_share_met_blocks the source also asks once more
+    // with the cells it learned (a new Repair, not a re-send of the same one): 2 and 5.
+    o.repair_share_met_blocks = false;
     o.time_limit_s = 90.0;
     const auto res = run_netsim(sc, o);
     EXPECT_FALSE(res.metrics.success) << "no way round the wall";
@@ -230,6 +234,31 @@ TEST(DecentralizedRepair, AnUnansweredRepairIsNotResentToTheSameNeighbours) {
   };
   EXPECT_EQ(source_repairs(true), 1);
   EXPECT_EQ(source_repairs(false), 4) << "sent, then re-sent after 1, 2 and 4 s";
+}
+
+// repair_share_met_blocks (issue #13, stop 19): scenario 2, run 9. The only answer to the
+// source's Repair crosses cells of the change that the source knows blocked and the answerer
+// does not: the source refuses it, waits, and goes on by a new Search without a Repair. With the
+// rule, the refusal teaches the source which of its cells to tell; it asks again (a new Repair
+// carrying them), the answerers plan round them and the source executes a Repair.
+TEST(DecentralizedRepair, ARefusedAnswerTeachesTheSourceWhatToTellItsAnswerers) {
+  const auto f =
+      load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/s2_run9_refused.yaml");
+  NetSimOptions o = f.options;
+  o.method = Method::kDecentralized;
+  o.repair_share_met_blocks = false;
+  const auto off = run_netsim(f.scenario, o).metrics;
+  ASSERT_TRUE(off.success);
+  EXPECT_GE(off.repair_answers_refused, 1) << "the answer crosses the change the source saw";
+  EXPECT_EQ(off.repairs_executed, 0);
+  EXPECT_EQ(off.repair_reasks, 0);
+  o.repair_share_met_blocks = true;
+  const auto on = run_netsim(f.scenario, o).metrics;
+  ASSERT_TRUE(on.success);
+  EXPECT_GE(on.repair_reasks, 1) << "a refusal with cells its Repair did not carry: asks again";
+  EXPECT_GT(on.repair_cells_max, 0);
+  EXPECT_GE(on.repairs_executed, 1);
+  EXPECT_LT(on.repair_answers_refused, on.repair_answers_received);
 }
 
 }  // namespace

@@ -148,6 +148,16 @@ struct NetSimOptions {
   /// those answers in s2r9 and s2r13 but meets the change again at once, s2r13 no longer arrives
   /// and s4r10 sends 128.9 kB instead of 56.5 kB (docs/reproductions/networked.md, stop 18).
   bool repair_share_changed = false;
+  /// Decentralized, not in the paper (issue #13, stop 19): the source's Repair carries the cells
+  /// it knows blocked at every change it has met, not only at the break it asks about: the cells
+  /// beside each break it handled, and the cells of its map that block the moves of an answer it
+  /// refused. After a refusal that taught it cells its Repair did not carry, it asks again (a new
+  /// Repair, new Num) with them, so the answerers (who mark them, repair_share_blocks) plan round
+  /// them. The answerers had not seen an earlier change and offered the old way through it
+  /// (s4r6: every answer refused). Off by default: it makes Repair execute in more change runs
+  /// (s2 10 of 12 instead of 8), but on the same change placements the source no longer arrives
+  /// in s2r13, s4r7, s4r10 and s4r14 (docs/reproductions/networked.md, stop 19).
+  bool repair_share_met_blocks = false;
   /// Decentralized, not in the paper: the source re-sends its Repair (repair_resend_s) only when
   /// a robot is in radio range that was not at any earlier send: a robot that had it ignores it
   /// (Table 4 line 1), so a re-send to the same neighbours only adds traffic (s4r6: 36 of 43
@@ -249,6 +259,9 @@ struct NetSimMetrics {
   /// the source, detours sent back, and repaired routes that reached the source / it refused.
   int repair_requests = 0, source_repair_requests = 0, repair_answers = 0;
   int repair_answers_received = 0, repair_answers_refused = 0;
+  /// repair_share_met_blocks: Repairs the source sent again with cells learned from a refused
+  /// answer, and the most cells one of its Repairs carried.
+  int repair_reasks = 0, repair_cells_max = 0;
   int changes_on_route = 0;  ///< obstacle changes that touched the source's route ahead
   int changes_applied = 0;   ///< obstacle changes that happened during the run
   /// Decentralized: point searches run by all robots, and copies of an already forwarded Search

@@ -98,6 +98,8 @@ NetSimMetrics aggregate_metrics(const std::vector<AgentReport>& robots, std::siz
     M.source_repair_requests = s.repair_requests;
     M.repair_answers_received = s.repair_answers_received;
     M.repair_answers_refused = s.repair_answers_refused;
+    M.repair_reasks = s.repair_reasks;
+    M.repair_cells_max = s.repair_cells_max;
   }
   return M;
 }

@@ -76,6 +76,9 @@ struct AgentReport {
   /// the repaired routes that reached it and those it refused as blocked in its own map.
   int repair_requests = 0, repair_answers = 0;
   int repair_answers_received = 0, repair_answers_refused = 0;
+  /// (source, repair_share_met_blocks) Repairs sent again with cells learned from a refused
+  /// answer, and the most cells one of its Repairs carried.
+  int repair_reasks = 0, repair_cells_max = 0;
   int changes_on_route = 0;  ///< (source) obstacle changes that touched its route ahead
   int point_searches = 0;    ///< decentralized point searches run (try_continue)
   /// Copies of an already forwarded Search ignored as not new (Table 2 line 4).
@@ -266,7 +269,14 @@ class RobotAgent {
                                                  std::pair<std::uint32_t, std::uint32_t> br);
   [[nodiscard]] std::vector<Vec2> changed_cells(const std::vector<network::VoronoiPoint>& path,
                                                 std::vector<Vec2> cells);
+  [[nodiscard]] std::vector<Vec2> occupied_in_discs(const std::vector<network::VoronoiPoint>& path,
+                                                    std::vector<Vec2> cells);
   void learn_blocks(const std::vector<Vec2>& blocked);
+  std::size_t add_met_blocks(const std::vector<Vec2>& cells);
+  [[nodiscard]] std::vector<Vec2> with_met_blocks(std::vector<Vec2> cells) const;
+  void learn_from_refusal(const std::vector<network::VoronoiPoint>& rest);
+  [[nodiscard]] bool tells_more(const network::RepairMessage& m,
+                                const std::vector<Vec2>& cells) const;
   [[nodiscard]] bool seen_near_block(const std::vector<network::VoronoiPoint>& ahead) const;
   void shrink_to_map(std::vector<network::VoronoiPoint>& path);
   std::vector<network::VoronoiPoint> detour(std::vector<network::VoronoiPoint> path,
@@ -334,6 +344,9 @@ class RobotAgent {
   std::optional<std::pair<Vec2, Vec2>> relay_break_;
   // Source: the cells that blocked its route at its latest break (repair_check_seen).
   std::vector<Vec2> block_seen_;
+  // Source (repair_share_met_blocks): the cells it knows blocked at every change it has met
+  // (beside its breaks, on the moves of answers it refused), sorted (y, x), each once.
+  std::vector<Cell> met_blocks_;
   bool collecting_ = false;
   double last_ack_ = 0.0;
 };

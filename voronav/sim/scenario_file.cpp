@@ -194,6 +194,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
            "repair_rejoin_m",
            "repair_share_blocks",
            "repair_share_changed",
+           "repair_share_met_blocks",
            "repair_resend_new_only",
            "repair_check_seen",
            "path_fallback_after_retries",
@@ -250,6 +251,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   flag("repair_check_answer", o.repair_check_answer);
   flag("repair_share_blocks", o.repair_share_blocks);
   flag("repair_share_changed", o.repair_share_changed);
+  flag("repair_share_met_blocks", o.repair_share_met_blocks);
   flag("repair_resend_new_only", o.repair_resend_new_only);
   flag("repair_check_seen", o.repair_check_seen);
   flag("path_fallback_after_retries", o.path_fallback_after_retries);
@@ -495,6 +497,7 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
       << "  repair_rejoin_m: " << fmt(o.repair_rejoin_m) << "\n"
       << "  repair_share_blocks: " << (o.repair_share_blocks ? "true" : "false") << "\n"
       << "  repair_share_changed: " << (o.repair_share_changed ? "true" : "false") << "\n"
+      << "  repair_share_met_blocks: " << (o.repair_share_met_blocks ? "true" : "false") << "\n"
       << "  repair_resend_new_only: " << (o.repair_resend_new_only ? "true" : "false") << "\n"
       << "  repair_check_seen: " << (o.repair_check_seen ? "true" : "false") << "\n"
       << "  path_fallback_after_retries: " << (o.path_fallback_after_retries ? "true" : "false")

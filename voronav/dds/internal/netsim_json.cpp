@@ -47,6 +47,8 @@ json agent_report_json(const sim::AgentReport& a) {
           {"repair_answers", a.repair_answers},
           {"repair_answers_received", a.repair_answers_received},
           {"repair_answers_refused", a.repair_answers_refused},
+          {"repair_reasks", a.repair_reasks},
+          {"repair_cells_max", a.repair_cells_max},
           {"changes_on_route", a.changes_on_route},
           {"point_searches", a.point_searches},
           {"search_copies_ignored", a.search_copies_ignored},
@@ -75,6 +77,8 @@ sim::AgentReport agent_report_from(const json& j) {
   a.repair_answers = j.value("repair_answers", 0);
   a.repair_answers_received = j.value("repair_answers_received", 0);
   a.repair_answers_refused = j.value("repair_answers_refused", 0);
+  a.repair_reasks = j.value("repair_reasks", 0);
+  a.repair_cells_max = j.value("repair_cells_max", 0);
   a.changes_on_route = j.at("changes_on_route").get<int>();
   a.point_searches = j.value("point_searches", 0);
   a.search_copies_ignored = j.value("search_copies_ignored", 0);
