@@ -510,6 +510,20 @@ class Ga {
     }
   }
 
+  /// The order of one child from the main stream: two different parents drawn uniformly from the
+  /// first pop_size individuals, DPX, then mutation with the mutation rate (the paper's GA, in the
+  /// draw order both sequential paths share).
+  std::vector<int> draw_child(const std::vector<Individual>& pop, int pop_size) {
+    const int a = uniform(0, pop_size - 1);
+    int b = uniform(0, pop_size - 2);
+    if (b >= a) ++b;
+    std::vector<int> child =
+        ops_.dpx(pop[static_cast<std::size_t>(a)].seq, pop[static_cast<std::size_t>(b)].seq, rng_);
+    if (unit() < o_.mutation_rate)
+      child = ops_.mutate(child, o_.mutation_min_edges, o_.mutation_max_edges, rng_);
+    return child;
+  }
+
   /// One child of parents pa, pb: DPX, mutation with the mutation rate, 3-opt; every random
   /// draw from the stream `seed`.
   Individual make_child(const std::vector<int>& pa, const std::vector<int>& pb, std::uint64_t seed,
@@ -573,14 +587,7 @@ class Ga {
     std::vector<std::vector<int>> seqs(static_cast<std::size_t>(count));
     std::vector<internal::GaRng> streams(static_cast<std::size_t>(count));
     for (int c = 0; c < count; ++c) {
-      const int a = uniform(0, pop_size - 1);
-      int b = uniform(0, pop_size - 2);
-      if (b >= a) ++b;
-      std::vector<int> child = ops_.dpx(pop[static_cast<std::size_t>(a)].seq,
-                                        pop[static_cast<std::size_t>(b)].seq, rng_);
-      if (unit() < o_.mutation_rate)
-        child = ops_.mutate(child, o_.mutation_min_edges, o_.mutation_max_edges, rng_);
-      seqs[static_cast<std::size_t>(c)] = std::move(child);
+      seqs[static_cast<std::size_t>(c)] = draw_child(pop, pop_size);
       streams[static_cast<std::size_t>(c)] = rng_;
       skip_paper_three_opt_draws();
     }
@@ -645,14 +652,7 @@ class Ga {
         crossovers += o_.crossovers_per_generation;
       }
       for (int c = 0; c < o_.crossovers_per_generation && o_.threads == 0 && !same_stream; ++c) {
-        const int a = uniform(0, pop_size - 1);
-        int b = uniform(0, pop_size - 2);
-        if (b >= a) ++b;
-        std::vector<int> child = ops_.dpx(pop[static_cast<std::size_t>(a)].seq,
-                                          pop[static_cast<std::size_t>(b)].seq, rng_);
-        if (unit() < o_.mutation_rate)
-          child = ops_.mutate(child, o_.mutation_min_edges, o_.mutation_max_edges, rng_);
-        Individual ind = make(std::move(child));
+        Individual ind = make(draw_child(pop, pop_size));
         three_opt(ind, gate_of(pop, pop_size));
         children.push_back(std::move(ind));
         ++crossovers;
