@@ -35,6 +35,16 @@ std::vector<int> random_order(int n, std::mt19937_64& rng) {
   return order;
 }
 
+// A search run another way (workers, threads) gave bit for bit the search `one`: the same order,
+// evaluations, per-round best, 3-opt improvements and delays.
+void expect_same_search(const SearchResult& r, const SearchResult& one, const std::string& what) {
+  EXPECT_EQ(r.order, one.order) << what;
+  EXPECT_EQ(r.evaluations, one.evaluations) << what;
+  EXPECT_EQ(r.best_per_round, one.best_per_round) << what;
+  EXPECT_EQ(r.three_opt_improvements, one.three_opt_improvements) << what;
+  EXPECT_EQ(r.resolution.delays, one.resolution.delays) << what;
+}
+
 // search_priority on a random network with the 3-opt order `order` (no EDF reduction), checked as
 // every GA test needs: the same seed gives the same order and evaluation count, the order is a
 // permutation whose exact resolution has the reported makespan, and it is never worse than the
@@ -189,12 +199,8 @@ TEST(CriticalMoves, GaWorkersGiveTheOneStreamResult) {
     const auto one = search_priority(net, so);
     for (const int w : {2, 3}) {
       so.ga.workers = w;
-      const auto r = search_priority(net, so);
-      EXPECT_EQ(r.order, one.order) << seed << " workers " << w;
-      EXPECT_EQ(r.evaluations, one.evaluations);
-      EXPECT_EQ(r.best_per_round, one.best_per_round);
-      EXPECT_EQ(r.three_opt_improvements, one.three_opt_improvements);
-      EXPECT_EQ(r.resolution.delays, one.resolution.delays);
+      expect_same_search(search_priority(net, so), one,
+                         "seed " + std::to_string(seed) + " workers " + std::to_string(w));
     }
     EXPECT_GE(one.generations, 2);
     EXPECT_GT(one.three_opt_improvements, 0U);
@@ -239,12 +245,8 @@ TEST(CriticalMoves, GaResultDoesNotDependOnTheThreadCount) {
       const auto one = search_priority(net, so);
       for (const int t : {2, 3}) {
         so.ga.threads = t;
-        const auto r = search_priority(net, so);
-        EXPECT_EQ(r.order, one.order) << seed << " threads " << t;
-        EXPECT_EQ(r.evaluations, one.evaluations);
-        EXPECT_EQ(r.best_per_round, one.best_per_round);
-        EXPECT_EQ(r.three_opt_improvements, one.three_opt_improvements);
-        EXPECT_EQ(r.resolution.delays, one.resolution.delays);
+        expect_same_search(search_priority(net, so), one,
+                           "seed " + std::to_string(seed) + " threads " + std::to_string(t));
       }
       EXPECT_GE(one.generations, 2);
     }
