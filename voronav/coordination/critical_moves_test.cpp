@@ -45,6 +45,18 @@ void expect_same_search(const SearchResult& r, const SearchResult& one, const st
   EXPECT_EQ(r.resolution.delays, one.resolution.delays) << what;
 }
 
+// Runs `so` as given, then with the GaOptions count `field` (workers, threads) set to 2 and 3, and
+// expects the same search each time; returns the first run.
+SearchResult expect_same_for_2_and_3(const MdNetwork& net, SearchOptions so, int GaOptions::*field,
+                                     const std::string& what) {
+  const SearchResult one = search_priority(net, so);
+  for (const int n : {2, 3}) {
+    so.ga.*field = n;
+    expect_same_search(search_priority(net, so), one, what + " " + std::to_string(n));
+  }
+  return one;
+}
+
 // search_priority on a random network with the 3-opt order `order` (no EDF reduction), checked as
 // every GA test needs: the same seed gives the same order and evaluation count, the order is a
 // permutation whose exact resolution has the reported makespan, and it is never worse than the
@@ -196,12 +208,8 @@ TEST(CriticalMoves, GaWorkersGiveTheOneStreamResult) {
     so.edf_reduction = false;
     so.ga.seed = seed;
     so.ga.three_opt_iterations = 150;
-    const auto one = search_priority(net, so);
-    for (const int w : {2, 3}) {
-      so.ga.workers = w;
-      expect_same_search(search_priority(net, so), one,
-                         "seed " + std::to_string(seed) + " workers " + std::to_string(w));
-    }
+    const auto one = expect_same_for_2_and_3(net, so, &GaOptions::workers,
+                                             "seed " + std::to_string(seed) + " workers");
     EXPECT_GE(one.generations, 2);
     EXPECT_GT(one.three_opt_improvements, 0U);
   }
@@ -242,12 +250,8 @@ TEST(CriticalMoves, GaResultDoesNotDependOnTheThreadCount) {
       so.ga.three_opt_order = order;
       so.ga.three_opt_iterations = 100;
       so.ga.threads = 1;
-      const auto one = search_priority(net, so);
-      for (const int t : {2, 3}) {
-        so.ga.threads = t;
-        expect_same_search(search_priority(net, so), one,
-                           "seed " + std::to_string(seed) + " threads " + std::to_string(t));
-      }
+      const auto one = expect_same_for_2_and_3(net, so, &GaOptions::threads,
+                                               "seed " + std::to_string(seed) + " threads");
       EXPECT_GE(one.generations, 2);
     }
   }
