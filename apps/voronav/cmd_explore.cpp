@@ -288,8 +288,8 @@ void setup(CLI::App& app) {
   cmd->add_option("--guard", args->guard,
                   "every method: the front guard of a robot on its route stops for anything "
                   "within 0.24 m in a +-40 deg fan (cone) or for a robot there and for a wall only "
-                  "when the body swept along the next 0.12 m of its route would touch it "
-                  "(corridor, ours)")
+                  "when the body swept along the next 0.12 m of its route would touch it, and "
+                  "routes' corners are not cut where the body would touch a wall (corridor, ours)")
       ->check(CLI::IsMember({"cone", "corridor"}))
       ->capture_default_str();
   cmd->add_option("--time", args->time, "Simulated time limit [s]")

@@ -959,6 +959,12 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         // Waypoint following: advance past reached waypoints, steer to the farthest visible one.
         while (a.next < a.route.size() &&
                distance(pose.position, a.route[a.next]) < o.goal_tolerance) {
+          // FrontGuard::kCorridor: no cutting a corner of the route where the body would not
+          // clear the wall (internal/front_guard.hpp); drive on to the waypoint instead.
+          if (o.guard == FrontGuard::kCorridor && a.next + 1 < a.route.size() &&
+              distance(pose.position, a.route[a.next]) > internal::kCornerReach &&
+              !internal::line_clear(blocked, pose.position, a.route[a.next + 1], body))
+            break;
           ++a.next;
           a.since_progress = 0.0;
         }

@@ -64,7 +64,9 @@ enum class TreeLegReplan { kNone, kAroundRobots };
 /// kCone = stop for anything (wall or robot) within body + 0.12 m in a +-0.7 rad fan (before
 /// stop 21; it stopped robots on wall corners beside legal routes); kCorridor = stop for a robot
 /// in that fan, for a wall only when the body's disc (+ 0.01 m) swept along the next 0.12 m of
-/// the route would touch it (ours).
+/// the route would touch it, and a robot switches to its next waypoint before reaching the one it
+/// heads for (0.3 m tolerance) only when the straight line there clears the walls too, so that it
+/// drives the route the planner checked instead of cutting its corners (ours).
 enum class FrontGuard { kCone, kCorridor };
 [[nodiscard]] std::string_view to_string(FrontGuard r);
 /// "cone" / "corridor"; throws voronav::Error naming the accepted values.

@@ -1,7 +1,8 @@
 // Tests of the runner's front guard (internal/front_guard.hpp, ExplorationOptions::guard): a
 // route the planner accepts past a wall corner is driven with the corridor rule and was stopped
 // by the cone rule (issue 14, stop 21: the root of the lab_intel door jam, the depot bans and the
-// willow crowd of stop 19); a robot on the route still stops the robot with both rules.
+// willow crowd of stop 19); a robot on the route still stops the robot with both rules; the
+// runner does not cut a route's corner where the body would not clear the wall.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -154,6 +155,18 @@ TEST(FrontGuard, AWallOnTheRouteStopsTheCorridorGuard) {
   EXPECT_FALSE(internal::front_guard(GuardRule::kCorridor, w, {{3.2, 1.625}, 0.0}, along, 1, {},
                                      kBody, guard_laser())
                    .stop);
+}
+
+TEST(FrontGuard, NoCornerCutWhereTheBodyWouldNotClearTheWall) {
+  // A route up along x = 2.8 m, then right along y = 1.75 m over the block. 0.25 m before the
+  // corner waypoint (within the 0.3 m waypoint tolerance) the straight line to the next waypoint
+  // would graze the block's corner (3.0, 1.5) m: the runner (kCorridor) drives on to the
+  // waypoint; from the waypoint the line is clear.
+  const BinaryGrid w = world_with_corner();
+  const Vec2 corner_wp{2.8, 1.75}, next_wp{3.8, 1.75};
+  EXPECT_FALSE(internal::line_clear(w, {2.8, 1.5}, next_wp, kBody));
+  EXPECT_TRUE(internal::line_clear(w, corner_wp, next_wp, kBody));
+  EXPECT_TRUE(internal::line_clear(w, {2.8, 0.5}, corner_wp, kBody));
 }
 
 TEST(FrontGuard, RouteAheadFollowsTheRouteRoundItsCorners) {
