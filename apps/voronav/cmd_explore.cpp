@@ -35,7 +35,7 @@ struct ExploreArgs {
   std::string idle_unstick = "on";
   std::string yield_to_held = "on";
   std::string retry_banned = "on";
-  std::string guard = "cone";
+  std::string guard = "corridor";
   std::uint64_t seed = 1;
   std::string start;
   std::filesystem::path out;

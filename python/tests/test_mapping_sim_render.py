@@ -102,7 +102,7 @@ def test_explore_options_match_the_cli(cli):
     o.tree_replan = "robots"
     o.tree_leg_replan = "none"
     o.unstick = False
-    o.guard = "corridor"
+    o.guard = "cone"
     o.controller.random_turn_rate = 0.3  # in place: the field is the options' own member
     o.controller.avoid_escape = "spin"
     assert o.controller.random_turn_rate == pytest.approx(0.3)
@@ -110,7 +110,7 @@ def test_explore_options_match_the_cli(cli):
     got = cli("explore", "--world", "paper", "--robots", "2", "--time", "60", "--seed", "3",
               "--tree-start", "20", "--tree-replan", "robots", "--tree-leg-replan", "none",
               "--unstick", "off", "--random-turn-rate", "0.3", "--avoid-escape", "spin",
-              "--guard", "corridor")
+              "--guard", "cone")
     for key in ("coverage", "distance_m", "feature_points", "leaves", "dispatches", "escapes",
                 "unsticks", "collisions", "guard_wall_stops", "guard_robot_stops"):
         assert res[key] == pytest.approx(got[key], rel=1e-5), key

@@ -141,7 +141,7 @@ struct ExplorationOptions {
   /// 69.1 % coverage.
   bool retry_banned = true;
   /// The front guard's rule (see FrontGuard); every method.
-  FrontGuard guard = FrontGuard::kCone;
+  FrontGuard guard = FrontGuard::kCorridor;
   double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
   double goal_tolerance = 0.3;  ///< [m] a waypoint or goal counts as reached
   double clearance = 0.1;       ///< [m] added to the body radius when planning paths
