@@ -35,6 +35,7 @@ struct ExploreArgs {
   std::string idle_unstick = "on";
   std::string yield_to_held = "on";
   std::string retry_banned = "on";
+  std::string guard = "corridor";
   std::uint64_t seed = 1;
   std::string start;
   std::filesystem::path out;
@@ -122,6 +123,7 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                 {"idle_unstick", a.idle_unstick},
                 {"yield_to_held", a.yield_to_held},
                 {"retry_banned", a.retry_banned},
+                {"guard", a.guard},
                 {"seed", a.seed},
                 {"stop_at_coverage", a.stop_at}};
   if (!a.start.empty()) {
@@ -162,6 +164,7 @@ void run(const ExploreArgs& a) {
   o.idle_unstick = a.idle_unstick == "on";
   o.yield_to_held = a.yield_to_held == "on";
   o.retry_banned = a.retry_banned == "on";
+  o.guard = exploration::parse_front_guard(a.guard);
   o.seed = a.seed;
   o.stop_at_coverage = a.stop_at;
   if (!a.start.empty())
@@ -281,6 +284,13 @@ void setup(CLI::App& app) {
                   "frontier, coordinated, tree-frontier: a robot left without a goal may take "
                   "again the goals it gave up when blocked, once per 60 s (on, ours) or never")
       ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--guard", args->guard,
+                  "every method: the front guard of a robot on its route stops for anything "
+                  "within 0.24 m in a +-40 deg fan (cone) or for a robot there and for a wall only "
+                  "when the body swept along the next 0.12 m of its route would touch it, and "
+                  "routes' corners are not cut where the body would touch a wall (corridor, ours)")
+      ->check(CLI::IsMember({"cone", "corridor"}))
       ->capture_default_str();
   cmd->add_option("--time", args->time, "Simulated time limit [s]")
       ->check(finite_range(1e-3, 1e6))

@@ -267,6 +267,10 @@ void bind_sim(py::module_& m) {
       {{"none", ex::TreeLegReplan::kNone}, {"robots", ex::TreeLegReplan::kAroundRobots}},
       "tree: a robot blocked on a tree leg skips a waypoint (none) or re-plans the leg around the "
       "robots near it (robots; CLI --tree-leg-replan).");
+  bind_enum<ex::FrontGuard>(
+      xp, "FrontGuard", {{"cone", ex::FrontGuard::kCone}, {"corridor", ex::FrontGuard::kCorridor}},
+      "The front guard of a robot on its route: stop for anything in a +-0.7 rad fan (cone) or "
+      "for a robot there and a wall on the route's swept corridor (corridor; CLI --guard).");
   bind_enum<robot::AvoidEscape>(
       xp, "AvoidEscape",
       {{"spin", robot::AvoidEscape::kSpin}, {"corridor", robot::AvoidEscape::kCorridor}},
@@ -359,6 +363,8 @@ void bind_sim(py::module_& m) {
                      "every method (CLI --yield-to-held on|off)")
       .def_readwrite("retry_banned", &ex::ExplorationOptions::retry_banned,
                      "frontier methods (CLI --retry-banned on|off)")
+      .def_readwrite("guard", &ex::ExplorationOptions::guard,
+                     "every method: FrontGuard cone|corridor (CLI --guard)")
       .def_readwrite("controller", &ex::ExplorationOptions::controller,
                      "tree: the reactive search's ControllerOptions")
       .def_readwrite("frontier_controller", &ex::ExplorationOptions::frontier_controller,

@@ -12,6 +12,7 @@
 #include "voronav/core/error.hpp"
 #include "voronav/core/stepper.hpp"
 #include "voronav/exploration/internal/block_clock.hpp"
+#include "voronav/exploration/internal/front_guard.hpp"
 #include "voronav/exploration/internal/right_of_way.hpp"
 #include "voronav/exploration/unstick.hpp"
 #include "voronav/field/distance_transform.hpp"
@@ -60,7 +61,8 @@ struct Agent {
   bool stalled = false;
   double leg_replan_t = -1e9;  // [s] last TreeLegReplan::kAroundRobots re-plan, and where
   Vec2 leg_replan_at;
-  bool unsticking = false;  // following an unstick route (ExplorationOptions::unstick)
+  bool unsticking = false;     // following an unstick route (ExplorationOptions::unstick)
+  bool guard_stopped = false;  // the front guard stopped it at its last route-following step
 };
 
 OccupancyGrid team_grid(const mapping::OccupancyMap& m) {
@@ -169,6 +171,16 @@ TreeLegReplan parse_tree_leg_replan(std::string_view name) {
   if (name == "robots") return TreeLegReplan::kAroundRobots;
   throw Error("--tree-leg-replan", 0,
               "expected one of none, robots; got '" + std::string(name) + "'");
+}
+
+std::string_view to_string(FrontGuard r) {
+  return r == FrontGuard::kCone ? "cone" : "corridor";
+}
+
+FrontGuard parse_front_guard(std::string_view name) {
+  if (name == "cone") return FrontGuard::kCone;
+  if (name == "corridor") return FrontGuard::kCorridor;
+  throw Error("--guard", 0, "expected one of cone, corridor; got '" + std::string(name) + "'");
 }
 
 std::string_view to_string(TreeReplan r) {
@@ -373,6 +385,8 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   guard_laser.field_of_view = 1.4;
   guard_laser.range_max = std::min(o.laser.range_max, 1.0);
   guard_laser.noise_stddev = 0.0;
+  const internal::GuardRule guard_rule =
+      o.guard == FrontGuard::kCone ? internal::GuardRule::kCone : internal::GuardRule::kCorridor;
 
   ExplorationResult result;
   result.method = o.method;
@@ -937,12 +951,20 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         if (j != i) others.push_back({agents[j]->body.true_pose().position, body});
       const Pose2 pose = a.body.true_pose();
       robot::BodyVelocity cmd;
+      const bool was_guard_stopped = a.guard_stopped;
+      a.guard_stopped = false;
       if (a.mode == AgentMode::kFollow && t < a.reactive_until) {
         cmd = a.controller.update(robot::cast_scan(blocked, pose, o.laser, others, &rng), o.dt);
       } else if (a.mode == AgentMode::kFollow) {
         // Waypoint following: advance past reached waypoints, steer to the farthest visible one.
         while (a.next < a.route.size() &&
                distance(pose.position, a.route[a.next]) < o.goal_tolerance) {
+          // FrontGuard::kCorridor: no cutting a corner of the route where the body would not
+          // clear the wall (internal/front_guard.hpp); drive on to the waypoint instead.
+          if (o.guard == FrontGuard::kCorridor && a.next + 1 < a.route.size() &&
+              distance(pose.position, a.route[a.next]) > internal::kCornerReach &&
+              !internal::line_clear(blocked, pose.position, a.route[a.next + 1], body))
+            break;
           ++a.next;
           a.since_progress = 0.0;
         }
@@ -976,23 +998,23 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
               std::atan2(target.y - pose.position.y, target.x - pose.position.x) - pose.yaw);
           cmd.omega = std::clamp(1.5 * e, -o.drive.max_angular_speed, o.drive.max_angular_speed);
           cmd.v = std::abs(e) > 0.6 ? 0.0 : o.controller.drive_velocity * std::cos(e);
-          // Guard: something (a wall corner, another robot) right in front -> stop.
-          const robot::LaserScan guard = robot::cast_scan(blocked, pose, guard_laser, others);
-          double front = guard.range_max;
-          for (float r : guard.ranges)
-            front = std::min(front, static_cast<double>(r));
-          if (front < body + 0.12 && cmd.v > 0.0) {
+          // Guard: a robot right in front, or a wall (ExplorationOptions::guard: anything in the
+          // cone, or a wall on the route's swept corridor; internal/front_guard.hpp) -> stop.
+          const internal::GuardVerdict gv =
+              cmd.v > 0.0 ? internal::front_guard(guard_rule, blocked, pose, a.route, a.next,
+                                                  others, body, guard_laser)
+                          : internal::GuardVerdict{};
+          if (gv.stop && !was_guard_stopped)
+            ++(gv.by_robot ? result.guard_robot_stops : result.guard_wall_stops);
+          a.guard_stopped = gv.stop;
+          if (gv.stop) {
             cmd.v = 0.0;
             a.block.on_step_refused(o.dt);
             // Right of way: blocked by a robot with a lower index (not by a wall), this robot
             // backs off for a moment so that a jam in a doorway dissolves.
-            const robot::LaserScan walls = robot::cast_scan(blocked, pose, guard_laser, {});
-            double wall_front = walls.range_max;
-            for (float r : walls.ranges)
-              wall_front = std::min(wall_front, static_cast<double>(r));
             // ExplorationOptions::yield_to_held: also from a robot in front that is held up
             // itself (internal/right_of_way.hpp).
-            if (wall_front > front + 0.05)
+            if (gv.by_robot)
               for (std::size_t j = 0; j < agents.size(); ++j) {
                 const Agent& b = *agents[j];
                 const internal::RightOfWayPeer peer{
@@ -1162,7 +1184,8 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"watchdog_events\":" << r.watchdog_events << ",\"leg_replans\":" << r.leg_replans
      << ",\"escapes\":" << r.escapes << ",\"unsticks\":" << r.unsticks
      << ",\"idle_unsticks\":" << r.idle_unsticks << ",\"yields\":" << r.yields
-     << ",\"ban_resets\":" << r.ban_resets
+     << ",\"ban_resets\":" << r.ban_resets << ",\"guard_wall_stops\":" << r.guard_wall_stops
+     << ",\"guard_robot_stops\":" << r.guard_robot_stops
      << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;
   if (include_recording) {

@@ -60,6 +60,18 @@ enum class TreeLegReplan { kNone, kAroundRobots };
 /// "none" / "robots"; throws voronav::Error naming the accepted values.
 [[nodiscard]] TreeLegReplan parse_tree_leg_replan(std::string_view name);
 
+/// The front guard of a robot following a route (issue 14, stop 21; internal/front_guard.hpp):
+/// kCone = stop for anything (wall or robot) within body + 0.12 m in a +-0.7 rad fan (before
+/// stop 21; it stopped robots on wall corners beside legal routes); kCorridor = stop for a robot
+/// in that fan, for a wall only when the body's disc (+ 0.01 m) swept along the next 0.12 m of
+/// the route would touch it, and a robot switches to its next waypoint before reaching the one it
+/// heads for (0.3 m tolerance) only when the straight line there clears the walls too, so that it
+/// drives the route the planner checked instead of cutting its corners (ours).
+enum class FrontGuard { kCone, kCorridor };
+[[nodiscard]] std::string_view to_string(FrontGuard r);
+/// "cone" / "corridor"; throws voronav::Error naming the accepted values.
+[[nodiscard]] FrontGuard parse_front_guard(std::string_view name);
+
 /// Controller options of kTree's reactive search and of the frontier methods' reactive windows.
 [[nodiscard]] inline robot::ReactiveControllerOptions tree_search_controller() {
   robot::ReactiveControllerOptions c;
@@ -128,6 +140,8 @@ struct ExplorationOptions {
   /// both robots had banned every frontier left by 360 s and wandered reactively to 900 s at
   /// 69.1 % coverage.
   bool retry_banned = true;
+  /// The front guard's rule (see FrontGuard); every method.
+  FrontGuard guard = FrontGuard::kCorridor;
   double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
   double goal_tolerance = 0.3;  ///< [m] a waypoint or goal counts as reached
   double clearance = 0.1;       ///< [m] added to the body radius when planning paths
@@ -222,6 +236,10 @@ struct ExplorationResult {
   int idle_unsticks = 0;  ///< of those, by ExplorationOptions::idle_unstick
   int yields = 0;         ///< back-offs from a held-up robot of higher index (yield_to_held)
   int ban_resets = 0;     ///< goalless robots that forgot their soft bans (retry_banned)
+  /// Front guard stops (a robot that drove forward the step before and is stopped now): by a wall
+  /// and by a robot (the right of way applies).
+  int guard_wall_stops = 0;
+  int guard_robot_stops = 0;
   std::size_t reachable_free_cells = 0;
   ExplorationRecording recording;
 };
