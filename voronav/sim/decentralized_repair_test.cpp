@@ -217,6 +217,8 @@ TEST(DecentralizedRepair, AnUnansweredRepairIsNotResentToTheSameNeighbours) {
     // Each of the two rules alone: with repair_share_met_blocks the source also asks once more
     // with the cells it learned (a new Repair, not a re-send of the same one): 2 and 5.
     o.repair_share_met_blocks = false;
+    // and repair_fix_answer (stop 21) repairs a refused answer by A*, which ends the wait.
+    o.repair_fix_answer = false;
     o.time_limit_s = 90.0;
     const auto res = run_netsim(sc, o);
     EXPECT_FALSE(res.metrics.success) << "no way round the wall";
