@@ -249,7 +249,7 @@ TEST(DecentralizedRepair, ARefusedAnswerTeachesTheSourceWhatToTellItsAnswerers) 
   NetSimOptions o = f.options;
   o.method = Method::kDecentralized;
   o.repair_share_met_blocks = false;
-  o.repair_fix_answer = false;  // the other answer to the same refusal (stop 21), on by default
+  o.repair_fix_answer = false;  // the other answer to the same refusal (stop 21)
   const auto off = run_netsim(f.scenario, o).metrics;
   ASSERT_TRUE(off.success);
   EXPECT_GE(off.repair_answers_refused, 1) << "the answer crosses the change the source saw";

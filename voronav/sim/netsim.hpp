@@ -165,10 +165,12 @@ struct NetSimOptions {
   /// own Voronoi points (as its own Repair, Table 5), else by A* on its own map to the first
   /// point of the answer past the block (as the repair timeout's replan, but onto the answer's
   /// way). Counted as a Repair executed and apart in repair_answers_fixed /
-  /// repair_answers_fixed_walk. On by default since stop 21: over s1-s4 x 16 runs on the same
-  /// change placements, Repair executed in 45 of 48 change runs instead of 37, 60 arrivals
-  /// instead of 59, less source travel and traffic (docs/reproductions/networked.md, stop 21).
-  bool repair_fix_answer = true;
+  /// repair_answers_fixed_walk. Off by default: on the change placements of the default
+  /// (off) it executes Repair in 45 of 48 change runs instead of 37 with 60 arrivals instead of
+  /// 59, but on the placements that make_paper_run chooses with it on, s4 arrives in 12 runs
+  /// instead of 13 and s2's source drives 153.4 m instead of 137.3 m
+  /// (docs/reproductions/networked.md, stop 21).
+  bool repair_fix_answer = false;
   /// Decentralized, not in the paper: the source re-sends its Repair (repair_resend_s) only when
   /// a robot is in radio range that was not at any earlier send: a robot that had it ignores it
   /// (Table 4 line 1), so a re-send to the same neighbours only adds traffic (s4r6: 36 of 43
