@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -49,6 +50,9 @@ struct NetsimArgs {
   std::string mcap;
   // Whether the option was given on the command line (it then overrides a scenario file).
   bool method_given = false, seed_given = false, loss_given = false, runs_given = false;
+  /// --repair-fix-answer true|false (NetSimOptions::repair_fix_answer); unset = the default or
+  /// the scenario file's.
+  std::optional<bool> repair_fix_answer;
 };
 
 /// What to run: `runs` scenarios (paper runs or the one of a file), each with `methods`.
@@ -184,6 +188,7 @@ Plan make_plan(const NetsimArgs& a) {
     p.scenario = [id, seed = a.seed](int run) { return sim::make_paper_run(id, run, seed); };
     p.options.seed = a.seed;
     p.options.radio.loss = a.loss;
+    if (a.repair_fix_answer) p.options.repair_fix_answer = *a.repair_fix_answer;
     p.methods = methods_of(a.method);
     return p;
   }
@@ -199,6 +204,7 @@ Plan make_plan(const NetsimArgs& a) {
   p.options = file->options;
   if (a.seed_given) p.options.seed = a.seed;
   if (a.loss_given) p.options.radio.loss = a.loss;
+  if (a.repair_fix_answer) p.options.repair_fix_answer = *a.repair_fix_answer;
   // The file's method unless --method is given; a file without one runs both.
   p.methods = a.method_given || !file->has_method ? methods_of(a.method)
                                                   : std::vector<sim::Method>{file->options.method};
@@ -213,6 +219,7 @@ void write_scenario(const NetsimArgs& a) {
     sc = sim::make_paper_run(id, a.run, a.seed);
     o.seed = a.seed;
     o.radio.loss = a.loss;
+    if (a.repair_fix_answer) o.repair_fix_answer = *a.repair_fix_answer;
     if (a.method != "both") o.method = sim::parse_method(a.method);
   } else {
     const Plan p = make_plan(a);
@@ -455,6 +462,9 @@ void run(const NetsimArgs& a) {
                          {"repair_answers_refused", r.repair_answers_refused},
                          {"repair_reasks", r.repair_reasks},
                          {"repair_cells_max", r.repair_cells_max},
+                         {"repairs_own", r.repairs_own},
+                         {"repair_answers_fixed", r.repair_answers_fixed},
+                         {"repair_answers_fixed_walk", r.repair_answers_fixed_walk},
                          {"changes", sc.changes.size()},
                          {"changes_applied", r.changes_applied},
                          {"changes_on_route", r.changes_on_route},
@@ -597,6 +607,10 @@ void setup(CLI::App& app) {
                    ->check(non_negative());
   auto* loss =
       c->add_option("--loss", args->loss, "probability that a radio message is lost [0..1]");
+  c->add_option("--repair-fix-answer", args->repair_fix_answer,
+                "true|false: the decentralized source repairs a Repair answer it refused "
+                "(blocked in its map) on its own map instead of waiting (options key "
+                "repair_fix_answer; overrides a scenario file's)");
   c->add_option("--write-scenario", args->write_scenario,
                 "write --scenario 1..4 --run K (or the given file) as a scenario file naming "
                 "--method (decentralized for both) and exit")

@@ -84,6 +84,9 @@ std::string metrics_to_json(const sim::NetSimMetrics& m) {
                   {"repair_answers_refused", m.repair_answers_refused},
                   {"repair_reasks", m.repair_reasks},
                   {"repair_cells_max", m.repair_cells_max},
+                  {"repairs_own", m.repairs_own},
+                  {"repair_answers_fixed", m.repair_answers_fixed},
+                  {"repair_answers_fixed_walk", m.repair_answers_fixed_walk},
                   {"changes_on_route", m.changes_on_route},
                   {"changes_applied", m.changes_applied},
                   {"point_searches", m.point_searches},
@@ -136,6 +139,9 @@ sim::NetSimMetrics metrics_from_json(const std::string& text) {
     m.repair_answers_refused = j.value("repair_answers_refused", 0);
     m.repair_reasks = j.value("repair_reasks", 0);
     m.repair_cells_max = j.value("repair_cells_max", 0);
+    m.repairs_own = j.value("repairs_own", 0);
+    m.repair_answers_fixed = j.value("repair_answers_fixed", 0);
+    m.repair_answers_fixed_walk = j.value("repair_answers_fixed_walk", 0);
     m.changes_on_route = j.at("changes_on_route").get<int>();
     m.changes_applied = j.at("changes_applied").get<int>();
     m.point_searches = j.value("point_searches", std::uint64_t{0});

@@ -215,6 +215,53 @@ void RobotAgent::learn_from_refusal(const std::vector<VoronoiPoint>& rest) {
   if (repair_out_ && tells_more(*repair_out_, cells)) check_source_route();
 }
 
+/// repair_fix_answer (source): an answer it refused (`rest`: its position, then the answer's
+/// route ahead) crosses cells its map knows blocked; its answerer had not seen the change, but
+/// the rest of the answer's way is what that robot saw free. The source keeps the answer and
+/// replaces only its blocked part, on its own map: first by a detour through its own open points
+/// (detour(), as for its own route, Table 5), else by A* on its own map (plan_walk, as the repair
+/// timeout's replan_to_route) to the first point of the answer past the block that it can plan
+/// to. Local replanning of the blocked part of a global route; not in the paper. Returns whether
+/// the source now drives the repaired answer.
+bool RobotAgent::fix_refused_answer(std::vector<VoronoiPoint> rest, RobotId from) {
+  if (!opt().repair_fix_answer || route_.empty() || rest.size() < 2) return false;
+  const auto br = find_break(rest, 0);
+  if (!br) return false;  // refused by seen_near_block alone: nothing to replan
+  auto& s = r_;
+  const std::uint32_t to = rejoin_past_block(rest, *br);
+  const std::size_t done = std::min(next_route_index(), route_.size());
+  shrink_to_map(rest);  // as in check_source_route: its own view of the change
+  const auto fixed = detour(rest, br->first, to);
+  const std::string who = "robot " + std::to_string(from.value) + "'s detour";
+  if (!fixed.empty()) {
+    route_.erase(route_.begin() + static_cast<std::ptrdiff_t>(done), route_.end());
+    route_.insert(route_.end(), fixed.begin() + 1, fixed.end());
+    set_source_waypoints(done);
+    repair_done();
+    ++report_.repairs_executed;
+    ++report_.repair_answers_fixed;
+    log_repair(true,
+               "repairs " + who + " (blocked in its map) by its own points (Repair executed)");
+    return true;
+  }
+  for (std::size_t i = std::max<std::size_t>(to, 1); i < rest.size(); ++i) {
+    if (!plan_walk(rest[i].position)) continue;
+    route_.assign(1, VoronoiPoint{s.pos, 1.0f, 0.0f});
+    route_.insert(route_.end(), rest.begin() + static_cast<std::ptrdiff_t>(i), rest.end());
+    for (std::size_t k = 2; k < route_.size(); ++k)
+      s.waypoints.push_back(route_[k].position);
+    back_steps_ = s.waypoints.size() - (route_.size() - 1);
+    route_base_ = 1;
+    repair_done();
+    ++report_.repairs_executed;
+    ++report_.repair_answers_fixed_walk;
+    log_repair(true,
+               "repairs " + who + " (blocked in its map) by A* on its own map (Repair executed)");
+    return true;
+  }
+  return false;
+}
+
 /// repair_check_seen: whether the moves of `ahead` (from the source's position) keep clear of
 /// where the obstacle the source saw may continue unseen: no cell within the robot radius of a
 /// move may be unknown to the source and next to (8-neighbour of) a cell that blocked its route.
@@ -498,6 +545,7 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
   };
   auto taken = [&] {
     ++report_.repairs_executed;
+    if (from == s.id) ++report_.repairs_own;
     log_repair(true, from == s.id ? "repairs its route with its own detour (Repair executed)"
                                   : "takes robot " + std::to_string(from.value) +
                                         "'s detour (Repair executed)");
@@ -509,9 +557,10 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
     const std::vector<VoronoiPoint> ahead(whole.begin() + 1, whole.end());
     if (!free_ahead(ahead)) {
       ++report_.repair_answers_refused;
-      if (opt().repair_share_met_blocks) {
+      if (opt().repair_fix_answer || opt().repair_share_met_blocks) {
         std::vector<VoronoiPoint> rest{VoronoiPoint{s.pos, 1.0f, 0.0f}};
         rest.insert(rest.end(), ahead.begin(), ahead.end());
+        if (fix_refused_answer(rest, from)) return true;
         learn_from_refusal(rest);
       }
 #ifdef VORONAV_NS_TRACE
@@ -545,9 +594,10 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
           n.begin() + static_cast<std::ptrdiff_t>(std::min(next, n.size())), n.end());
       if (!free_ahead(ahead)) {
         ++report_.repair_answers_refused;
-        if (opt().repair_share_met_blocks) {
+        if (opt().repair_fix_answer || opt().repair_share_met_blocks) {
           std::vector<VoronoiPoint> rest{VoronoiPoint{s.pos, 1.0f, 0.0f}};
           rest.insert(rest.end(), ahead.begin(), ahead.end());
+          if (fix_refused_answer(rest, from)) return true;
           learn_from_refusal(rest);
         }
         NS_DEBUG("t=%.1f source ignores robot %u's relay detour (blocked in its map)\n", now_,
@@ -599,6 +649,7 @@ void RobotAgent::check_source_route() {
   NS_DEBUG("t=%.1f source own detour %zu\n", now_, fixed.size());
   if (!fixed.empty()) {
     ++report_.repairs_executed;
+    ++report_.repairs_own;
     log_repair(true, "detours around the block on its own map (Repair executed)");
     route_.erase(route_.begin() + static_cast<std::ptrdiff_t>(std::min(next, route_.size())),
                  route_.end());

@@ -217,6 +217,8 @@ TEST(DecentralizedRepair, AnUnansweredRepairIsNotResentToTheSameNeighbours) {
     // Each of the two rules alone: with repair_share_met_blocks the source also asks once more
     // with the cells it learned (a new Repair, not a re-send of the same one): 2 and 5.
     o.repair_share_met_blocks = false;
+    // and repair_fix_answer (stop 21) repairs a refused answer by A*, which ends the wait.
+    o.repair_fix_answer = false;
     o.time_limit_s = 90.0;
     const auto res = run_netsim(sc, o);
     EXPECT_FALSE(res.metrics.success) << "no way round the wall";
@@ -247,6 +249,7 @@ TEST(DecentralizedRepair, ARefusedAnswerTeachesTheSourceWhatToTellItsAnswerers) 
   NetSimOptions o = f.options;
   o.method = Method::kDecentralized;
   o.repair_share_met_blocks = false;
+  o.repair_fix_answer = false;  // the other answer to the same refusal (stop 21)
   const auto off = run_netsim(f.scenario, o).metrics;
   ASSERT_TRUE(off.success);
   EXPECT_GE(off.repair_answers_refused, 1) << "the answer crosses the change the source saw";
@@ -259,6 +262,31 @@ TEST(DecentralizedRepair, ARefusedAnswerTeachesTheSourceWhatToTellItsAnswerers) 
   EXPECT_GT(on.repair_cells_max, 0);
   EXPECT_GE(on.repairs_executed, 1);
   EXPECT_LT(on.repair_answers_refused, on.repair_answers_received);
+}
+
+// repair_fix_answer (issue #13, stop 21): scenario 2, run 9 again. The only answer crosses the
+// change the source saw and its answerer did not, so without the rule the source refuses it and
+// executes no Repair. With it, the source keeps the answer and replans only its blocked part on
+// its own map (here by A*: its own points hold no detour), and drives the repaired answer.
+TEST(DecentralizedRepair, TheSourceRepairsARefusedAnswerOnItsOwnMap) {
+  const auto f =
+      load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/s2_run9_refused.yaml");
+  NetSimOptions o = f.options;
+  o.method = Method::kDecentralized;
+  o.repair_share_met_blocks = false;
+  o.repair_fix_answer = false;
+  const auto off = run_netsim(f.scenario, o).metrics;
+  ASSERT_TRUE(off.success);
+  EXPECT_GE(off.repair_answers_refused, 1);
+  EXPECT_EQ(off.repairs_executed, 0);
+  EXPECT_EQ(off.repair_answers_fixed + off.repair_answers_fixed_walk, 0);
+  o.repair_fix_answer = true;
+  const auto on = run_netsim(f.scenario, o).metrics;
+  ASSERT_TRUE(on.success);
+  EXPECT_GE(on.repair_answers_refused, 1) << "the answer is still blocked in the source's map";
+  EXPECT_GE(on.repair_answers_fixed_walk, 1) << "the source replans the blocked part by A*";
+  EXPECT_GE(on.repairs_executed,
+            on.repairs_own + on.repair_answers_fixed + on.repair_answers_fixed_walk);
 }
 
 }  // namespace

@@ -100,6 +100,9 @@ NetSimMetrics aggregate_metrics(const std::vector<AgentReport>& robots, std::siz
     M.repair_answers_refused = s.repair_answers_refused;
     M.repair_reasks = s.repair_reasks;
     M.repair_cells_max = s.repair_cells_max;
+    M.repairs_own = s.repairs_own;
+    M.repair_answers_fixed = s.repair_answers_fixed;
+    M.repair_answers_fixed_walk = s.repair_answers_fixed_walk;
   }
   return M;
 }

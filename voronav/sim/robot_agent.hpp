@@ -79,6 +79,8 @@ struct AgentReport {
   /// (source, repair_share_met_blocks) Repairs sent again with cells learned from a refused
   /// answer, and the most cells one of its Repairs carried.
   int repair_reasks = 0, repair_cells_max = 0;
+  /// (source) its own detours, and refused answers it repaired (repair_fix_answer).
+  int repairs_own = 0, repair_answers_fixed = 0, repair_answers_fixed_walk = 0;
   int changes_on_route = 0;  ///< (source) obstacle changes that touched its route ahead
   int point_searches = 0;    ///< decentralized point searches run (try_continue)
   /// Copies of an already forwarded Search ignored as not new (Table 2 line 4).
@@ -275,6 +277,7 @@ class RobotAgent {
   std::size_t add_met_blocks(const std::vector<Vec2>& cells);
   [[nodiscard]] std::vector<Vec2> with_met_blocks(std::vector<Vec2> cells) const;
   void learn_from_refusal(const std::vector<network::VoronoiPoint>& rest);
+  bool fix_refused_answer(std::vector<network::VoronoiPoint> rest, network::RobotId from);
   [[nodiscard]] bool tells_more(const network::RepairMessage& m,
                                 const std::vector<Vec2>& cells) const;
   [[nodiscard]] bool seen_near_block(const std::vector<network::VoronoiPoint>& ahead) const;

@@ -47,6 +47,8 @@ TEST(Scenarios, TheBoxOfRunSixIsPassedByARepairThatReJoinsTheRoutePastIt) {
     o.method = Method::kDecentralized;
     o.record = true;
     o.repair_rejoin_m = rejoin_m;
+    // The rule alone: repair_fix_answer (stop 21) would repair the refused detour by A*.
+    o.repair_fix_answer = false;
     const auto res = run_netsim(sc, o);
     const auto& r = res.metrics;
     ASSERT_TRUE(r.success) << "repair_rejoin_m " << rejoin_m;

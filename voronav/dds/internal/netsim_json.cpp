@@ -49,6 +49,9 @@ json agent_report_json(const sim::AgentReport& a) {
           {"repair_answers_refused", a.repair_answers_refused},
           {"repair_reasks", a.repair_reasks},
           {"repair_cells_max", a.repair_cells_max},
+          {"repairs_own", a.repairs_own},
+          {"repair_answers_fixed", a.repair_answers_fixed},
+          {"repair_answers_fixed_walk", a.repair_answers_fixed_walk},
           {"changes_on_route", a.changes_on_route},
           {"point_searches", a.point_searches},
           {"search_copies_ignored", a.search_copies_ignored},
@@ -79,6 +82,9 @@ sim::AgentReport agent_report_from(const json& j) {
   a.repair_answers_refused = j.value("repair_answers_refused", 0);
   a.repair_reasks = j.value("repair_reasks", 0);
   a.repair_cells_max = j.value("repair_cells_max", 0);
+  a.repairs_own = j.value("repairs_own", 0);
+  a.repair_answers_fixed = j.value("repair_answers_fixed", 0);
+  a.repair_answers_fixed_walk = j.value("repair_answers_fixed_walk", 0);
   a.changes_on_route = j.at("changes_on_route").get<int>();
   a.point_searches = j.value("point_searches", 0);
   a.search_copies_ignored = j.value("search_copies_ignored", 0);
