@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "voronav/network/sim_radio.hpp"
@@ -243,18 +244,29 @@ TEST(DecentralizedRepair, AnUnansweredRepairIsNotResentToTheSameNeighbours) {
 // does not: the source refuses it, waits, and goes on by a new Search without a Repair. With the
 // rule, the refusal teaches the source which of its cells to tell; it asks again (a new Repair
 // carrying them), the answerers plan round them and the source executes a Repair.
-TEST(DecentralizedRepair, ARefusedAnswerTeachesTheSourceWhatToTellItsAnswerers) {
-  const auto f =
+// Scenario 2, run 9 (data/netsim/s2_run9_refused.yaml), decentralized, with neither
+// repair_share_met_blocks nor repair_fix_answer: the source refuses the only answer (it crosses
+// the change the source saw and its answerer did not) and executes no Repair. Returns the
+// scenario file and the run's metrics after checking exactly that.
+std::pair<NetSimScenarioFile, NetSimMetrics> refused_run9_without_either_rule() {
+  auto f =
       load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/s2_run9_refused.yaml");
-  NetSimOptions o = f.options;
-  o.method = Method::kDecentralized;
-  o.repair_share_met_blocks = false;
-  o.repair_fix_answer = false;  // the other answer to the same refusal (stop 21)
-  const auto off = run_netsim(f.scenario, o).metrics;
-  ASSERT_TRUE(off.success);
+  f.options.method = Method::kDecentralized;
+  f.options.repair_share_met_blocks = false;
+  f.options.repair_fix_answer = false;
+  const auto off = run_netsim(f.scenario, f.options).metrics;
+  EXPECT_TRUE(off.success);
   EXPECT_GE(off.repair_answers_refused, 1) << "the answer crosses the change the source saw";
   EXPECT_EQ(off.repairs_executed, 0);
   EXPECT_EQ(off.repair_reasks, 0);
+  EXPECT_EQ(off.repair_answers_fixed + off.repair_answers_fixed_walk, 0);
+  return {f, off};
+}
+
+TEST(DecentralizedRepair, ARefusedAnswerTeachesTheSourceWhatToTellItsAnswerers) {
+  const auto [f, off] = refused_run9_without_either_rule();
+  ASSERT_TRUE(off.success);
+  NetSimOptions o = f.options;
   o.repair_share_met_blocks = true;
   const auto on = run_netsim(f.scenario, o).metrics;
   ASSERT_TRUE(on.success);
@@ -269,17 +281,9 @@ TEST(DecentralizedRepair, ARefusedAnswerTeachesTheSourceWhatToTellItsAnswerers) 
 // executes no Repair. With it, the source keeps the answer and replans only its blocked part on
 // its own map (here by A*: its own points hold no detour), and drives the repaired answer.
 TEST(DecentralizedRepair, TheSourceRepairsARefusedAnswerOnItsOwnMap) {
-  const auto f =
-      load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/s2_run9_refused.yaml");
-  NetSimOptions o = f.options;
-  o.method = Method::kDecentralized;
-  o.repair_share_met_blocks = false;
-  o.repair_fix_answer = false;
-  const auto off = run_netsim(f.scenario, o).metrics;
+  const auto [f, off] = refused_run9_without_either_rule();
   ASSERT_TRUE(off.success);
-  EXPECT_GE(off.repair_answers_refused, 1);
-  EXPECT_EQ(off.repairs_executed, 0);
-  EXPECT_EQ(off.repair_answers_fixed + off.repair_answers_fixed_walk, 0);
+  NetSimOptions o = f.options;
   o.repair_fix_answer = true;
   const auto on = run_netsim(f.scenario, o).metrics;
   ASSERT_TRUE(on.success);
