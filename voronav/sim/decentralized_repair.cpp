@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "voronav/core/cell_iterators.hpp"
 #include "voronav/core/error.hpp"
@@ -13,6 +15,23 @@ namespace voronav::sim {
 
 using namespace network;
 using namespace agent_detail;
+
+namespace {
+
+/// The centres of `cells` in the frame of `g`, sorted by row then column, each once (what a
+/// Repair carries in `blocked`).
+std::vector<Vec2> sorted_centres(std::vector<Cell> cells, const GridGeometry& g) {
+  std::sort(cells.begin(), cells.end(),
+            [](Cell a, Cell b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  std::vector<Vec2> out;
+  out.reserve(cells.size());
+  for (Cell c : cells)
+    out.push_back(g.cell_center(c));
+  return out;
+}
+
+}  // namespace
 
 // ---- decentralized: Repair (Tables 4–5) -------------------------------------------------------
 /// Broken segments of `path` as seen in the robot's map: [first broken point, first good point
@@ -123,13 +142,7 @@ std::vector<Vec2> RobotAgent::occupied_in_discs(const std::vector<VoronoiPoint>&
     });
     report_.metrics.work += static_cast<std::uint64_t>(std::ceil(3.2 * rad * rad)) + 1;
   }
-  std::sort(out.begin(), out.end(),
-            [](Cell a, Cell b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  cells.clear();
-  for (Cell c : out)
-    cells.push_back(g.cell_center(c));
-  return cells;
+  return sorted_centres(std::move(out), g);
 }
 
 /// Marks the cells a Repair says are blocked occupied in this robot's map (repair_share_blocks):
@@ -177,13 +190,7 @@ std::vector<Vec2> RobotAgent::with_met_blocks(std::vector<Vec2> cells) const {
   std::vector<Cell> all = met_blocks_;
   for (Vec2 q : cells)
     if (const auto c = g.world_to_cell(q)) all.push_back(*c);
-  std::sort(all.begin(), all.end(),
-            [](Cell a, Cell b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
-  all.erase(std::unique(all.begin(), all.end()), all.end());
-  cells.clear();
-  for (Cell c : all)
-    cells.push_back(g.cell_center(c));
-  return cells;
+  return sorted_centres(std::move(all), g);
 }
 
 /// repair_share_met_blocks (source): whether `cells` holds a cell the Repair `m` does not carry.
