@@ -103,14 +103,7 @@ std::vector<Vec2> RobotAgent::blocking_cells(const std::vector<VoronoiPoint>& pa
     });
   }
   report_.metrics.work += cells.size();
-  std::sort(cells.begin(), cells.end(),
-            [](Cell a, Cell b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
-  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-  std::vector<Vec2> out;
-  out.reserve(cells.size());
-  for (Cell c : cells)
-    out.push_back(g.cell_center(c));
-  return out;
+  return sorted_centres(std::move(cells), g);
 }
 
 /// repair_share_changed: `cells` (blocking_cells of a break) with every cell this robot knows
