@@ -89,18 +89,34 @@ inline constexpr double kCornerReach = 0.08;  ///< [m] a waypoint is reached thi
   return out;
 }
 
-/// True when the robot's disc (body + kCorridorMargin) swept along the straight line from `from`
-/// to `to` keeps clear of the walls by front_guard's wall rule (it never comes within the disc's
-/// radius of a wall and nearer than it is at `from`).
-[[nodiscard]] inline bool line_clear(const BinaryGrid& world, Vec2 from, Vec2 to, double body) {
+/// The wall rule of kCorridor: true when the robot's disc (body + kCorridorMargin) at each of
+/// `ahead` (points on its way from `from`) either keeps its radius from every wall or is no nearer
+/// to one than it is at `from` (a robot already near a wall may drive along or away from it).
+[[nodiscard]] inline bool swept_clear(const BinaryGrid& world, Vec2 from,
+                                      std::span<const Vec2> ahead, double body) {
   const double r = body + kCorridorMargin, cap = r + 0.02;
   const double now = wall_clearance(world, from, cap);
-  const std::vector<Vec2> line{to};
-  for (const Vec2 p : route_ahead(from, line, 0, distance(from, to), 0.03)) {
+  for (const Vec2 p : ahead) {
     const double c = wall_clearance(world, p, cap);
     if (c < r && c < now - 1e-3) return false;
   }
   return true;
+}
+
+/// The shortest range of `scan` (its range_max when every beam is longer).
+[[nodiscard]] inline double nearest_range(const robot::LaserScan& scan) {
+  double front = scan.range_max;
+  for (float r : scan.ranges)
+    front = std::min(front, static_cast<double>(r));
+  return front;
+}
+
+/// True when the robot's disc (body + kCorridorMargin) swept along the straight line from `from`
+/// to `to` keeps clear of the walls by front_guard's wall rule (it never comes within the disc's
+/// radius of a wall and nearer than it is at `from`).
+[[nodiscard]] inline bool line_clear(const BinaryGrid& world, Vec2 from, Vec2 to, double body) {
+  const std::vector<Vec2> line{to};
+  return swept_clear(world, from, route_ahead(from, line, 0, distance(from, to), 0.03), body);
 }
 
 /// The guard's verdict for a robot at `pose` that wants to drive forward towards route[next]
@@ -111,18 +127,12 @@ inline constexpr double kCornerReach = 0.08;  ///< [m] a waypoint is reached thi
                                               double body, const robot::LaserOptions& laser) {
   const double stop_at = body + kGuardReach;
   const robot::LaserScan all = robot::cast_scan(world, pose, laser, others);
-  double front = all.range_max;
-  for (float r : all.ranges)
-    front = std::min(front, static_cast<double>(r));
+  const double front = nearest_range(all);
   GuardVerdict v;
   if (rule == GuardRule::kCone) {
     if (front >= stop_at) return v;
     v.stop = true;
-    const robot::LaserScan walls = robot::cast_scan(world, pose, laser, {});
-    double wall_front = walls.range_max;
-    for (float r : walls.ranges)
-      wall_front = std::min(wall_front, static_cast<double>(r));
-    v.by_robot = wall_front > front + 0.05;
+    v.by_robot = nearest_range(robot::cast_scan(world, pose, laser, {})) > front + 0.05;
     return v;
   }
   // kCorridor. Robots: the beams that a robot cuts short (shorter than without the robots).
@@ -132,15 +142,11 @@ inline constexpr double kCornerReach = 0.08;  ///< [m] a waypoint is reached thi
       if (all.ranges[k] < walls.ranges[k] && all.ranges[k] < stop_at) v.by_robot = true;
   }
   // Walls: the disc swept along the route ahead.
-  const double r = body + kCorridorMargin, cap = r + 0.02;
-  const double now = wall_clearance(world, pose.position, cap);
-  for (const Vec2 p : route_ahead(pose.position, route, next, kGuardReach, 0.02)) {
-    const double c = wall_clearance(world, p, cap);
-    if (c < r && c < now - 1e-3) {
-      v.stop = true;
-      v.by_robot = false;  // the wall would stop it anyway: no back-off
-      return v;
-    }
+  if (!swept_clear(world, pose.position, route_ahead(pose.position, route, next, kGuardReach, 0.02),
+                   body)) {
+    v.stop = true;
+    v.by_robot = false;  // the wall would stop it anyway: no back-off
+    return v;
   }
   v.stop = v.by_robot;
   return v;
