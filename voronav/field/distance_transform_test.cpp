@@ -4,15 +4,12 @@
 
 #include <random>
 
+#include "voronav/core/internal/test_grids.hpp"
+
 namespace voronav::field {
 namespace {
 
-BinaryGrid random_grid(std::mt19937& rng, int w, int h, double p) {
-  BinaryGrid g(w, h, 0);
-  std::bernoulli_distribution b(p);
-  for (std::size_t i = 0; i < g.size(); ++i) g[i] = b(rng) ? 1 : 0;
-  return g;
-}
+using test::random_grid;
 
 TEST(DistanceTransform, EqualsBruteForceOnRandomMaps) {
   std::mt19937 rng(42);

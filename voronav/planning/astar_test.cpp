@@ -8,6 +8,7 @@
 #include <cstring>
 #include <random>
 
+#include "voronav/core/internal/test_grids.hpp"
 #include "voronav/field/distance_transform.hpp"
 #include "voronav/planning/bfs.hpp"
 #include "voronav/planning/planner_factory.hpp"
@@ -15,24 +16,8 @@
 namespace voronav::planning {
 namespace {
 
-BinaryGrid random_grid(std::mt19937& rng, int w, int h, double p) {
-  BinaryGrid g(w, h, 0);
-  std::bernoulli_distribution b(p);
-  for (std::size_t i = 0; i < g.size(); ++i) g[i] = b(rng) ? 1 : 0;
-  return g;
-}
-
-BinaryGrid from_rows(std::initializer_list<const char*> rows_top_first) {
-  const int h = static_cast<int>(rows_top_first.size());
-  const int w = static_cast<int>(std::strlen(*rows_top_first.begin()));
-  BinaryGrid g(w, h, 0);
-  int j = 0;
-  for (const char* row : rows_top_first) {
-    for (int x = 0; x < w; ++x) g[Cell{x, h - 1 - j}] = row[x] == '#' ? 1 : 0;
-    ++j;
-  }
-  return g;
-}
+using test::from_rows;
+using test::random_grid;
 
 TEST(AStar, OpenGridOctileLength) {
   const BinaryGrid g(10, 10, 0);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <random>
 
+#include "voronav/core/internal/test_grids.hpp"
 #include "voronav/io/movingai.hpp"
 #include "voronav/planning/astar.hpp"
 #include "voronav/planning/planner_factory.hpp"
@@ -14,18 +15,7 @@
 namespace voronav::planning {
 namespace {
 
-BinaryGrid from_rows(std::initializer_list<const char*> rows_top_first) {
-  const int h = static_cast<int>(rows_top_first.size());
-  const int w = static_cast<int>(std::strlen(*rows_top_first.begin()));
-  BinaryGrid g(w, h, 0);
-  int j = 0;
-  for (const char* row : rows_top_first) {
-    for (int x = 0; x < w; ++x)
-      g[Cell{x, h - 1 - j}] = row[x] == '#' ? 1 : 0;
-    ++j;
-  }
-  return g;
-}
+using test::from_rows;
 
 // Random maps of three kinds: scattered cells, random rectangles (rooms and long walls, which
 // give long straight jumps across several 64-bit words), and both.
