@@ -298,6 +298,20 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
     return d;
   };
 
+  std::int32_t* queue = nullptr;
+  std::int32_t next = 1;
+  // Table 1's count rule for an unnumbered free neighbour q: a region below the density
+  // threshold is marked and skipped, any other gets the next number. True when q is the goal.
+  auto number = [&](std::ptrdiff_t q) {
+    if (D > 0 && density(q) < D) {
+      label[q] = RasField::kBelowDensity;
+      return false;
+    }
+    label[q] = next;
+    queue[next++] = static_cast<std::int32_t>(q);
+    return until_goal && q == goal_p;
+  };
+
   const auto start_p = static_cast<std::int32_t>(f.padded(start_region));
   label[start_p] = 0;
   f.step_first_.push_back(0);
@@ -310,9 +324,8 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
     f.cum_.push_back(0);
     return RasStatus::kOk;
   }
-  std::int32_t* queue = f.cell_of_.data();
+  queue = f.cell_of_.data();
   queue[0] = start_p;
-  std::int32_t next = 1;
   std::int32_t step_end = 0;  // last id of the step being expanded
   unsigned since_check = 0;
   RasStatus status = until_goal ? RasStatus::kUnreachable : RasStatus::kOk;
@@ -341,13 +354,7 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
         if (flank_a[ui] != 0 && (label[p + flank_a[ui]] == RasField::kObstacle ||
                                  label[p + flank_b[ui]] == RasField::kObstacle))
           continue;
-        if (D > 0 && density(q) < D) {
-          label[q] = RasField::kBelowDensity;
-          continue;
-        }
-        label[q] = next;
-        queue[next++] = static_cast<std::int32_t>(q);
-        if (until_goal && q == goal_p) {
+        if (number(q)) {
           found = true;
           break;
         }
@@ -379,13 +386,7 @@ RasStatus RasSearch::run(const RegionGrid& regions, Cell start_region,
         const int i = std::countr_zero(mask);
         mask &= mask - 1;
         const std::ptrdiff_t q = p + off[(*order)[static_cast<std::size_t>(i)]];
-        if (D > 0 && density(q) < D) {
-          label[q] = RasField::kBelowDensity;
-          continue;
-        }
-        label[q] = next;
-        queue[next++] = static_cast<std::int32_t>(q);
-        if (until_goal && q == goal_p) {
+        if (number(q)) {
           found = true;
           break;
         }
