@@ -124,7 +124,11 @@ struct NetSimOptions {
   /// Repair (new Num) with twice the hop limit (carried in the message, RepairMessage::hop_limit),
   /// up to this many hops, and waits repair_timeout_s again, before it replans on its own map;
   /// robots that relay it add themselves to its relays so the answer comes back hop by hop.
-  /// Counted in repair_rings_expanded. 0 = off (the fixed neighbourhood of repair_hops).
+  /// Counted in repair_rings_expanded. 0 = off (the fixed neighbourhood of repair_hops). Off by
+  /// default (32 measured, docs/reproductions/networked.md, stop 22): s4 arrives in 14 runs
+  /// instead of 12 and executes Repair in 10 of 12 change runs instead of 6, but s2r12 and s2r16
+  /// get no answer even at 32 hops, s3r7's far answer is refused (its answerer had not seen the
+  /// change) and s2's and s3's sources drive farther (143.8 / 56.8 m instead of 137.7 / 52.4).
   int repair_expand_hops = 0;
   double collect_s = 1.5;         ///< centralized: wait this long without new Ack before planning
   double repair_timeout_s = 8.0;  ///< decentralized: source re-searches when blocked this long
@@ -181,8 +185,11 @@ struct NetSimOptions {
   /// Decentralized, not in the paper (issue #13, stop 22): with repair_fix_answer, the A* that
   /// repairs a refused answer first keeps to space someone sensed free (cells the source knows
   /// free, the free discs of the answer's points); only when that finds no walk it counts unknown
-  /// cells free as before. Counted in repair_answers_fixed_seen.
-  bool repair_fix_seen_only = true;
+  /// cells free as before. Counted in repair_answers_fixed_seen. Off by default: on the 64 runs
+  /// of s1-s4 with repair_fix_answer it found a walk in 3 (s2r7, r11, r15), and every run gave
+  /// the same figures as without it; s4r11 still makes 127 replans (reproductions/networked.md,
+  /// stop 22).
+  bool repair_fix_seen_only = false;
   /// Decentralized, not in the paper: the source re-sends its Repair (repair_resend_s) only when
   /// a robot is in radio range that was not at any earlier send: a robot that had it ignores it
   /// (Table 4 line 1), so a re-send to the same neighbours only adds traffic (s4r6: 36 of 43
