@@ -69,6 +69,19 @@ def case_scenario3_json():
             check(d[m][k] == s[m][k], f"{m} {k}: dds {d[m][k]} vs sim {s[m][k]}")
 
 
+def case_repair_ring_equals_sim():
+    # Issue #13, stop 22: scenario 3 run 7 with the expanding-ring Repair (repair_expand_hops):
+    # the Repair sent again with its hop limit in the message and answered from beyond two hops
+    # must give the same run over DDS as in-process.
+    f = os.path.join(ROOT, "data", "netsim", "s3_run7_unanswered.yaml")
+    args = ("--scenario", f, "--method", "decentralized", "--repair-expand-hops", "32")
+    sim = per_run(*args)
+    dds = per_run(*args, "--transport", "dds")
+    same_runs(sim, dds, "s3r7 with repair_expand_hops")
+    check(dds[0]["repair_rings_expanded"] >= 1 and dds[0]["repair_answers_received"] >= 1,
+          f"the ring was sent and answered: {dds[0]}")
+
+
 def case_killed_relay():
     # The corridor: the route comes back through every robot. Robot 5's process dies after step
     # 20, before the Path answer passes it: the answer is lost at that hop, the source searches

@@ -53,6 +53,10 @@ struct NetsimArgs {
   /// --repair-fix-answer true|false (NetSimOptions::repair_fix_answer); unset = the default or
   /// the scenario file's.
   std::optional<bool> repair_fix_answer;
+  /// --repair-expand-hops N (NetSimOptions::repair_expand_hops); unset = default or file's.
+  std::optional<int> repair_expand_hops;
+  /// --repair-fix-seen-only true|false (NetSimOptions::repair_fix_seen_only).
+  std::optional<bool> repair_fix_seen_only;
 };
 
 /// What to run: `runs` scenarios (paper runs or the one of a file), each with `methods`.
@@ -189,6 +193,8 @@ Plan make_plan(const NetsimArgs& a) {
     p.options.seed = a.seed;
     p.options.radio.loss = a.loss;
     if (a.repair_fix_answer) p.options.repair_fix_answer = *a.repair_fix_answer;
+    if (a.repair_expand_hops) p.options.repair_expand_hops = *a.repair_expand_hops;
+    if (a.repair_fix_seen_only) p.options.repair_fix_seen_only = *a.repair_fix_seen_only;
     p.methods = methods_of(a.method);
     return p;
   }
@@ -205,6 +211,8 @@ Plan make_plan(const NetsimArgs& a) {
   if (a.seed_given) p.options.seed = a.seed;
   if (a.loss_given) p.options.radio.loss = a.loss;
   if (a.repair_fix_answer) p.options.repair_fix_answer = *a.repair_fix_answer;
+  if (a.repair_expand_hops) p.options.repair_expand_hops = *a.repair_expand_hops;
+  if (a.repair_fix_seen_only) p.options.repair_fix_seen_only = *a.repair_fix_seen_only;
   // The file's method unless --method is given; a file without one runs both.
   p.methods = a.method_given || !file->has_method ? methods_of(a.method)
                                                   : std::vector<sim::Method>{file->options.method};
@@ -220,6 +228,8 @@ void write_scenario(const NetsimArgs& a) {
     o.seed = a.seed;
     o.radio.loss = a.loss;
     if (a.repair_fix_answer) o.repair_fix_answer = *a.repair_fix_answer;
+    if (a.repair_expand_hops) o.repair_expand_hops = *a.repair_expand_hops;
+    if (a.repair_fix_seen_only) o.repair_fix_seen_only = *a.repair_fix_seen_only;
     if (a.method != "both") o.method = sim::parse_method(a.method);
   } else {
     const Plan p = make_plan(a);
@@ -465,6 +475,8 @@ void run(const NetsimArgs& a) {
                          {"repairs_own", r.repairs_own},
                          {"repair_answers_fixed", r.repair_answers_fixed},
                          {"repair_answers_fixed_walk", r.repair_answers_fixed_walk},
+                         {"repair_rings_expanded", r.repair_rings_expanded},
+                         {"repair_answers_fixed_seen", r.repair_answers_fixed_seen},
                          {"changes", sc.changes.size()},
                          {"changes_applied", r.changes_applied},
                          {"changes_on_route", r.changes_on_route},
@@ -611,6 +623,15 @@ void setup(CLI::App& app) {
                 "true|false: the decentralized source repairs a Repair answer it refused "
                 "(blocked in its map) on its own map instead of waiting (options key "
                 "repair_fix_answer; overrides a scenario file's)");
+  c->add_option("--repair-expand-hops", args->repair_expand_hops,
+                "0..255: an unanswered decentralized Repair is sent again with twice the hop "
+                "limit, up to this many hops (0 = off; options key repair_expand_hops; "
+                "overrides a scenario file's)")
+      ->check(CLI::Range(0, 255));
+  c->add_option("--repair-fix-seen-only", args->repair_fix_seen_only,
+                "true|false: with --repair-fix-answer, the source's A* repair of a refused answer "
+                "first keeps to space seen free (options key repair_fix_seen_only; overrides a "
+                "scenario file's)");
   c->add_option("--write-scenario", args->write_scenario,
                 "write --scenario 1..4 --run K (or the given file) as a scenario file naming "
                 "--method (decentralized for both) and exit")

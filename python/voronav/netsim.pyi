@@ -31,6 +31,8 @@ class Options:
     max_search_attempts: int
     hop_limit: int
     repair_hops: int
+    repair_expand_hops: int
+    repair_fix_seen_only: bool
     collect_s: float
     repair_timeout_s: float
     seed: int

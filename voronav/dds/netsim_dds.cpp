@@ -87,6 +87,8 @@ std::string metrics_to_json(const sim::NetSimMetrics& m) {
                   {"repairs_own", m.repairs_own},
                   {"repair_answers_fixed", m.repair_answers_fixed},
                   {"repair_answers_fixed_walk", m.repair_answers_fixed_walk},
+                  {"repair_rings_expanded", m.repair_rings_expanded},
+                  {"repair_answers_fixed_seen", m.repair_answers_fixed_seen},
                   {"changes_on_route", m.changes_on_route},
                   {"changes_applied", m.changes_applied},
                   {"point_searches", m.point_searches},
@@ -142,6 +144,8 @@ sim::NetSimMetrics metrics_from_json(const std::string& text) {
     m.repairs_own = j.value("repairs_own", 0);
     m.repair_answers_fixed = j.value("repair_answers_fixed", 0);
     m.repair_answers_fixed_walk = j.value("repair_answers_fixed_walk", 0);
+    m.repair_rings_expanded = j.value("repair_rings_expanded", 0);
+    m.repair_answers_fixed_seen = j.value("repair_answers_fixed_seen", 0);
     m.changes_on_route = j.at("changes_on_route").get<int>();
     m.changes_applied = j.at("changes_applied").get<int>();
     m.point_searches = j.value("point_searches", std::uint64_t{0});

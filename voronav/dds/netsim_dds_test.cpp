@@ -48,6 +48,7 @@ TEST(NetsimDds, MetricsJsonRoundTrips) {
   m.repair_answers = 4;
   m.repair_answers_received = 5;
   m.repair_answers_refused = 1;
+  m.repair_rings_expanded = 3;
   m.simulated_s = 51.2;
   m.wall_s = 3.5;
   sim::RobotMetrics r;
@@ -77,6 +78,7 @@ TEST(NetsimDds, MetricsJsonRoundTrips) {
   EXPECT_EQ(back.repair_answers, 4);
   EXPECT_EQ(back.repair_answers_received, 5);
   EXPECT_EQ(back.repair_answers_refused, 1);
+  EXPECT_EQ(back.repair_rings_expanded, 3);
   ASSERT_EQ(back.robots.size(), 2u);
   EXPECT_EQ(back.robots[0].work, 99u);
   EXPECT_EQ(back.robots[0].sent_by_type[1].bytes, 600u);

@@ -200,6 +200,7 @@ void encode_payload(Writer& w, const RepairMessage& m) {
   w.count(m.blocked.size());
   for (Vec2 p : m.blocked)
     w.vec(p);
+  if (m.hop_limit != 0) w.u8(m.hop_limit);  // optional last byte (0 = not sent)
 }
 void encode_payload(Writer& w, const RequestMessage& m) {
   w.id(m.source);
@@ -280,6 +281,10 @@ Payload decode_payload(MessageType t, Reader& r) {
       m.blocked.resize(r.count(8, "blocked cells"));
       for (auto& p : m.blocked)
         p = r.vec("blocked cell");
+      if (!r.done()) {
+        m.hop_limit = r.u8("hop limit");
+        if (m.hop_limit == 0) r.fail("a sent hop limit must be > 0");
+      }
       return m;
     }
     case MessageType::kRequest: {

@@ -89,6 +89,12 @@ struct RepairMessage {
   /// Not in Table 4 (issue #13, option repair_share_blocks): the centres of the cells its sender
   /// saw blocking the broken moves; receivers mark them occupied before they look for a detour.
   std::vector<Vec2> blocked;
+  /// Not in Table 4 (issue #13, option repair_expand_hops): the hop limit of this Repair; 0 =
+  /// each receiver's repair_hops (the paper's fixed neighbourhood). The source sends a new Repair
+  /// with a larger limit when none came back (an expanding ring); robots that relay such a
+  /// Repair add themselves to `relays`, so the answer comes back hop by hop. Sent only when
+  /// non-zero (an optional last byte), so a Repair without it is the bytes of Table 5.
+  std::uint8_t hop_limit = 0;
   friend bool operator==(const RepairMessage&, const RepairMessage&) = default;
 };
 

@@ -39,6 +39,8 @@ std::vector<Envelope> all_kinds() {
                   2,
                   {{0.5, 0.25}, {0.75, 0.25}}};
   v.push_back({Header{RobotId{2}, kBroadcast, RobotId{2}, 9, 0}, r});
+  r.hop_limit = 4;  // repair_expand_hops: the optional last byte
+  v.push_back({Header{RobotId{2}, kBroadcast, RobotId{2}, 10, 1}, r});
   v.push_back({Header{RobotId{0}, kBroadcast, RobotId{0}, 1, 0}, RequestMessage{RobotId{0}, 1}});
   OccupancyGrid g(GridGeometry{5, 3, 0.2, {{1.0, 2.0}, 0.0}}, kUnknown);
   g[Cell{0, 0}] = kFree;
@@ -80,6 +82,16 @@ TEST(Messages, EveryTruncationIsRejected) {
       EXPECT_THROW((void)decode(std::span(bytes).first(n)), Error) << n;
     }
   }
+}
+
+TEST(Messages, ARepairCarriesItsHopLimitOnlyWhenSet) {
+  RepairMessage r{RobotId{1}, 3, {RobotId{1}}, {{{0, 0}, 1, 0}, {{1, 0}, 1, 1}}, 0, 1, {}};
+  const auto plain = encode({Header{}, r});
+  r.hop_limit = 8;
+  const auto ringed = encode({Header{}, r});
+  EXPECT_EQ(ringed.size(), plain.size() + 1);  // a Repair without it keeps the bytes of Table 5
+  EXPECT_EQ(std::get<RepairMessage>(decode(plain).payload).hop_limit, 0);
+  EXPECT_EQ(std::get<RepairMessage>(decode(ringed).payload).hop_limit, 8);
 }
 
 TEST(Messages, TrailingBytesAreRejected) {

@@ -221,8 +221,11 @@ void RobotAgent::learn_from_refusal(const std::vector<VoronoiPoint>& rest) {
 /// replaces only its blocked part, on its own map: first by a detour through its own open points
 /// (detour(), as for its own route, Table 5), else by A* on its own map (plan_walk, as the repair
 /// timeout's replan_to_route) to the first point of the answer past the block that it can plan
-/// to. Local replanning of the blocked part of a global route; not in the paper. Returns whether
-/// the source now drives the repaired answer.
+/// to. With repair_fix_seen_only that A* first keeps to space someone sensed free: cells the
+/// source knows free and the free discs of the answer's points (shrunk to its map); only when
+/// no such walk exists it plans through unknown space as before (s4r11: the optimistic walk led
+/// into the unseen rest of the change, 127 replans). Local replanning of the blocked part of a
+/// global route; not in the paper. Returns whether the source now drives the repaired answer.
 bool RobotAgent::fix_refused_answer(std::vector<VoronoiPoint> rest, RobotId from) {
   if (!opt().repair_fix_answer || route_.empty() || rest.size() < 2) return false;
   const auto br = find_break(rest, 0);
@@ -244,20 +247,21 @@ bool RobotAgent::fix_refused_answer(std::vector<VoronoiPoint> rest, RobotId from
                "repairs " + who + " (blocked in its map) by its own points (Repair executed)");
     return true;
   }
-  for (std::size_t i = std::max<std::size_t>(to, 1); i < rest.size(); ++i) {
-    if (!plan_walk(rest[i].position)) continue;
-    route_.assign(1, VoronoiPoint{s.pos, 1.0f, 0.0f});
-    route_.insert(route_.end(), rest.begin() + static_cast<std::ptrdiff_t>(i), rest.end());
-    for (std::size_t k = 2; k < route_.size(); ++k)
-      s.waypoints.push_back(route_[k].position);
-    back_steps_ = s.waypoints.size() - (route_.size() - 1);
-    route_base_ = 1;
-    repair_done();
-    ++report_.repairs_executed;
-    ++report_.repair_answers_fixed_walk;
-    log_repair(true,
-               "repairs " + who + " (blocked in its map) by A* on its own map (Repair executed)");
-    return true;
+  for (const bool seen_only : {true, false}) {
+    if (seen_only && !opt().repair_fix_seen_only) continue;
+    for (std::size_t i = std::max<std::size_t>(to, 1); i < rest.size(); ++i) {
+      if (!plan_walk(rest[i].position, seen_only ? &rest : nullptr)) continue;
+      route_.assign(1, VoronoiPoint{s.pos, 1.0f, 0.0f});
+      route_.insert(route_.end(), rest.begin() + static_cast<std::ptrdiff_t>(i), rest.end());
+      drive_walk_then_route();
+      repair_done();
+      ++report_.repairs_executed;
+      ++report_.repair_answers_fixed_walk;
+      if (seen_only) ++report_.repair_answers_fixed_seen;
+      log_repair(true, "repairs " + who + " (blocked in its map) by A* on its own map" +
+                           (seen_only ? " through space seen free" : "") + " (Repair executed)");
+      return true;
+    }
   }
   return false;
 }
@@ -474,7 +478,18 @@ void RobotAgent::on(const Header& h, const RepairMessage& m) {
     }
     return;
   }
-  if (h.hops < opt().repair_hops) broadcast(m, static_cast<std::uint8_t>(h.hops + 1));  // relay
+  // Relay (Table 4 line 5) within the Repair's hop limit: its own (repair_expand_hops, an
+  // expanding ring) or the fixed repair_hops. A robot that relays a ring Repair adds itself to
+  // its relays, so the answer comes back hop by hop (on_repair_path) from beyond two hops.
+  const int limit = m.hop_limit != 0 ? m.hop_limit : opt().repair_hops;
+  if (h.hops >= limit) return;
+  if (m.hop_limit == 0) {
+    broadcast(m, static_cast<std::uint8_t>(h.hops + 1));
+    return;
+  }
+  RepairMessage out = m;
+  out.relays.push_back(r.id);
+  broadcast(std::move(out), static_cast<std::uint8_t>(h.hops + 1));
 }
 
 void RobotAgent::on_repair_path(PathMessage m, RobotId from) {
@@ -499,6 +514,37 @@ void RobotAgent::on_repair_path(PathMessage m, RobotId from) {
     relay_break_.reset();
   }
   if (!m.relays.empty()) send_reliable(m.relays.back(), m);
+}
+
+/// repair_expand_hops (source), at its repair timeout: when no answer at all reached it since it
+/// sent its Repair, it sends a new Repair (new Num, so every robot handles it again, Table 4
+/// line 1) with twice the hop limit, up to repair_expand_hops and hop_limit, and waits
+/// repair_timeout_s again. An expanding-ring search; not in the paper (its Repair goes to the
+/// neighbours only). Returns whether it sent one.
+bool RobotAgent::expand_repair_ring() {
+  if (opt().repair_expand_hops <= 0 || !repair_out_) return false;
+  if (report_.repair_answers_received != answers_at_repair_) return false;  // answered (refused)
+  const int now_limit = repair_out_->hop_limit != 0 ? repair_out_->hop_limit : opt().repair_hops;
+  const int next = std::min({2 * now_limit, opt().repair_expand_hops, opt().hop_limit});
+  if (next <= now_limit) return false;
+  auto& s = r_;
+  RepairMessage m = *repair_out_;
+  m.num = (s.id.value << 16) | (++s.repair_counter & 0xFFFFu);
+  m.relays = {s.id};
+  m.hop_limit = static_cast<std::uint8_t>(next);
+  s.repairs_seen.insert(m.num);
+  ++report_.repair_rings_expanded;
+  log_repair(false, "got no answer and asks again up to " + std::to_string(next) +
+                        " hops (Repair message, expanding ring)");
+  repair_out_ = m;
+  blocked_since_ = now_;
+  repair_heard_.clear();
+  for (const auto& n : transport_.nearby(s.id))
+    repair_heard_.push_back(n.id);
+  repair_resend_gap_ = opt().repair_resend_s;
+  repair_resend_at_ = repair_resend_gap_ > 0.0 ? now_ + repair_resend_gap_ : -1.0;
+  broadcast(m, 1);
+  return true;
 }
 
 /// The source stops waiting for a Repair answer (repaired, re-planned or given up).
@@ -690,6 +736,7 @@ void RobotAgent::check_source_route() {
     log_repair(false, "is blocked and asks its neighbours (Repair message)");
   }
   repair_out_ = m;
+  answers_at_repair_ = report_.repair_answers_received;
   repair_heard_.clear();
   for (const auto& n : transport_.nearby(s.id))
     repair_heard_.push_back(n.id);
@@ -706,18 +753,24 @@ bool RobotAgent::replan_to_route() {
   for (std::size_t i = std::max<std::size_t>(next, 1) + 1; i < route_.size(); ++i) {
     if (!plan_walk(route_[i].position)) continue;
     ++report_.replans;
-    auto prefix = s.waypoints;
     route_.erase(route_.begin() + 1, route_.begin() + static_cast<std::ptrdiff_t>(i));
     route_[0] = VoronoiPoint{s.pos, 1.0f, 0.0f};
-    for (std::size_t k = 2; k < route_.size(); ++k)
-      prefix.push_back(route_[k].position);
-    s.waypoints = std::move(prefix);
-    s.wp = 0;
-    back_steps_ = s.waypoints.size() - (route_.size() - 1);
-    route_base_ = 1;
+    drive_walk_then_route();
     return true;
   }
   return false;
+}
+
+/// After plan_walk to route_[1] (route_[0] is where the source stands): the source drives the
+/// planned walk, then the route from route_[1] on; the walk's waypoints are its way back onto
+/// the route (back_steps_), and the route proper starts at route_[1] (route_base_).
+void RobotAgent::drive_walk_then_route() {
+  auto& s = r_;
+  for (std::size_t k = 2; k < route_.size(); ++k)
+    s.waypoints.push_back(route_[k].position);
+  s.wp = 0;
+  back_steps_ = s.waypoints.size() - (route_.size() - 1);
+  route_base_ = 1;
 }
 
 }  // namespace voronav::sim

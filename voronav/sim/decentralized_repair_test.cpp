@@ -293,5 +293,42 @@ TEST(DecentralizedRepair, TheSourceRepairsARefusedAnswerOnItsOwnMap) {
             on.repairs_own + on.repair_answers_fixed + on.repair_answers_fixed_walk);
 }
 
+// repair_expand_hops (issue #13, stop 22): scenario 3, run 7 (data/netsim/s3_run7_unanswered.yaml).
+// No robot within repair_hops (2) of the blocked source knows a way round the change: no answer
+// comes, no Repair executes and the source replans on its own map. With the expanding ring, the
+// source asks again up to 4 hops after repair_timeout_s, and an answer comes back hop by hop from
+// beyond two hops. That answerer had not seen the change either, so the source refuses it as
+// blocked in its own map; with repair_fix_answer too it repairs that answer and executes a Repair.
+TEST(DecentralizedRepair, AnUnansweredRepairIsSentAgainFarther) {
+  auto f = load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) +
+                                "/data/netsim/s3_run7_unanswered.yaml");
+  f.options.method = Method::kDecentralized;
+  f.options.repair_expand_hops = 0;
+  f.options.repair_fix_answer = false;
+  const auto off = run_netsim(f.scenario, f.options).metrics;
+  ASSERT_TRUE(off.success);
+  EXPECT_GE(off.source_repair_requests, 1);
+  EXPECT_EQ(off.repair_answers_received, 0) << "nobody within two hops answers";
+  EXPECT_EQ(off.repairs_executed, 0);
+  EXPECT_EQ(off.repair_rings_expanded, 0);
+
+  NetSimOptions o = f.options;
+  o.repair_expand_hops = 32;
+  const auto ring = run_netsim(f.scenario, o).metrics;
+  ASSERT_TRUE(ring.success);
+  EXPECT_EQ(ring.repair_rings_expanded, 1) << "one larger ring (4 hops) brought an answer";
+  EXPECT_GE(ring.repair_answers_received, 1) << "the answer came back from beyond two hops";
+  EXPECT_EQ(ring.repair_answers_refused, ring.repair_answers_received)
+      << "its answerer had not seen the change";
+
+  o.repair_fix_answer = true;
+  const auto both = run_netsim(f.scenario, o).metrics;
+  ASSERT_TRUE(both.success);
+  EXPECT_EQ(both.repair_rings_expanded, 1);
+  EXPECT_GE(both.repairs_executed, 1) << "the source repairs the far answer and drives it";
+  EXPECT_GE(both.repair_answers_fixed + both.repair_answers_fixed_walk, 1);
+  EXPECT_LT(both.source_travel_m, ring.source_travel_m);
+}
+
 }  // namespace
 }  // namespace voronav::sim

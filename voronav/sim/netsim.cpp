@@ -80,7 +80,7 @@ void NetSimOptions::validate() const {
   if (!(path_wait_s >= 0.0) || !std::isfinite(path_wait_s))
     throw Error("netsim.path_wait_s", 0, "expected a finite number >= 0");
   if (max_search_attempts < 1 || link_retries < 0 || hop_limit < 1 || hop_limit > 255 ||
-      repair_hops < 1)
+      repair_hops < 1 || repair_expand_hops < 0 || repair_expand_hops > 255)
     throw Error("netsim", 0, "attempts/retries/hop limits out of range");
   radio.validate();
 }

@@ -117,8 +117,19 @@ struct NetSimOptions {
   int max_search_attempts = 8;
   double link_timeout_s = 0.3;  ///< hop-by-hop retry after no LinkAck [s]
   int link_retries = 6;
-  int hop_limit = 32;             ///< flood bound (hops) for Search, Request and Repair
-  int repair_hops = 2;            ///< Repair reaches neighbours up to this many hops
+  int hop_limit = 32;   ///< flood bound (hops) for Search, Request and Repair
+  int repair_hops = 2;  ///< Repair reaches neighbours up to this many hops
+  /// Decentralized, not in the paper (issue #13, stop 22): an expanding-ring Repair. When no
+  /// answer at all reached the source within repair_timeout_s of its Repair, it sends a new
+  /// Repair (new Num) with twice the hop limit (carried in the message, RepairMessage::hop_limit),
+  /// up to this many hops, and waits repair_timeout_s again, before it replans on its own map;
+  /// robots that relay it add themselves to its relays so the answer comes back hop by hop.
+  /// Counted in repair_rings_expanded. 0 = off (the fixed neighbourhood of repair_hops). Off by
+  /// default (32 measured, docs/reproductions/networked.md, stop 22): s4 arrives in 14 runs
+  /// instead of 12 and executes Repair in 10 of 12 change runs instead of 6, but s2r12 and s2r16
+  /// get no answer even at 32 hops, s3r7's far answer is refused (its answerer had not seen the
+  /// change) and s2's and s3's sources drive farther (143.8 / 56.8 m instead of 137.7 / 52.4).
+  int repair_expand_hops = 0;
   double collect_s = 1.5;         ///< centralized: wait this long without new Ack before planning
   double repair_timeout_s = 8.0;  ///< decentralized: source re-searches when blocked this long
   /// Decentralized, not in the paper (Tables 4–5 say nothing of lost or unanswered Repairs): the
@@ -171,6 +182,14 @@ struct NetSimOptions {
   /// instead of 13 and s2's source drives 153.4 m instead of 137.3 m
   /// (docs/reproductions/networked.md, stop 21).
   bool repair_fix_answer = false;
+  /// Decentralized, not in the paper (issue #13, stop 22): with repair_fix_answer, the A* that
+  /// repairs a refused answer first keeps to space someone sensed free (cells the source knows
+  /// free, the free discs of the answer's points); only when that finds no walk it counts unknown
+  /// cells free as before. Counted in repair_answers_fixed_seen. Off by default: on the 64 runs
+  /// of s1-s4 with repair_fix_answer it found a walk in 3 (s2r7, r11, r15), and every run gave
+  /// the same figures as without it; s4r11 still makes 127 replans (reproductions/networked.md,
+  /// stop 22).
+  bool repair_fix_seen_only = false;
   /// Decentralized, not in the paper: the source re-sends its Repair (repair_resend_s) only when
   /// a robot is in radio range that was not at any earlier send: a robot that had it ignores it
   /// (Table 4 line 1), so a re-send to the same neighbours only adds traffic (s4r6: 36 of 43
@@ -279,6 +298,10 @@ struct NetSimMetrics {
   /// repair_fix_answer, a refused answer it repaired by its own points / by A* on its own map
   /// (the rest of repairs_executed are answers or relay detours it took as they were).
   int repairs_own = 0, repair_answers_fixed = 0, repair_answers_fixed_walk = 0;
+  /// repair_expand_hops: new Repairs the source sent with a larger hop limit after none came back.
+  int repair_rings_expanded = 0;
+  /// repair_fix_seen_only: of repair_answers_fixed_walk, the walks kept to space seen free.
+  int repair_answers_fixed_seen = 0;
   int changes_on_route = 0;  ///< obstacle changes that touched the source's route ahead
   int changes_applied = 0;   ///< obstacle changes that happened during the run
   /// Decentralized: point searches run by all robots, and copies of an already forwarded Search

@@ -103,6 +103,8 @@ NetSimMetrics aggregate_metrics(const std::vector<AgentReport>& robots, std::siz
     M.repairs_own = s.repairs_own;
     M.repair_answers_fixed = s.repair_answers_fixed;
     M.repair_answers_fixed_walk = s.repair_answers_fixed_walk;
+    M.repair_rings_expanded = s.repair_rings_expanded;
+    M.repair_answers_fixed_seen = s.repair_answers_fixed_seen;
   }
   return M;
 }
@@ -319,7 +321,7 @@ void RobotAgent::timers() {
       retry_search();
     repair_timers();
     if (!route_.empty() && blocked_since_ >= 0.0 &&
-        now_ - blocked_since_ >= opt().repair_timeout_s) {
+        now_ - blocked_since_ >= opt().repair_timeout_s && !expand_repair_ring()) {
       repair_done();
       // No Repair answer: the source plans a way on its own map to the first route point past
       // the break (counted in replans); only when there is none it starts a new Search.
@@ -481,7 +483,10 @@ bool RobotAgent::segment_known_free(Vec2 a, Vec2 b) const {
 }
 
 // ---- walking on the robot's own (optimistic) map ----------------------------------------------
-bool RobotAgent::plan_walk(Vec2 target) {
+/// A* on the robot's own map from its position to `target`; unknown cells count as free
+/// (optimistic). With `seen`, only cells it knows free or that lie inside the free disc of a
+/// point of `seen` (space that point's maker sensed free) may be used (repair_fix_seen_only).
+bool RobotAgent::plan_walk(Vec2 target, const std::vector<VoronoiPoint>* seen) {
   auto& r = r_;
   const auto& wg = scen().world.geometry();
   const auto a = wg.world_to_cell(r.pos), b = wg.world_to_cell(target);
@@ -509,8 +514,22 @@ bool RobotAgent::plan_walk(Vec2 target) {
     }
     BinaryGrid win(GridGeometry{hi.x - lo.x + 1, hi.y - lo.y + 1, wg.resolution, {}}, 0);
     for (int y = 0; y < win.height(); ++y)
-      for (int x = 0; x < win.width(); ++x)
-        win[Cell{x, y}] = r.map.at(Cell{x, y} + lo) == kOccupied ? 1 : 0;
+      for (int x = 0; x < win.width(); ++x) {
+        const auto v = r.map.at(Cell{x, y} + lo);
+        win[Cell{x, y}] = v == kOccupied || (seen && v != kFree) ? 1 : 0;
+      }
+    if (seen) {
+      for (const auto& p : *seen) {
+        const auto c = wg.world_to_cell(p.position);
+        if (!c || !(p.clearance > 0.0f)) continue;
+        for_each_disc_cell(*c, p.clearance / wg.resolution, [&](Cell d) {
+          const Cell w = d - lo;
+          if (win.contains(w) && r.map.at(d) != kOccupied) win[w] = 0;
+          return true;
+        });
+      }
+      report_.metrics.work += seen->size();
+    }
     result = timed([&] {
       BinaryGrid pg = planning::make_planning_grid(win, opt().robot_radius_m);
       pg[*a - lo] = 0;

@@ -81,6 +81,10 @@ struct AgentReport {
   int repair_reasks = 0, repair_cells_max = 0;
   /// (source) its own detours, and refused answers it repaired (repair_fix_answer).
   int repairs_own = 0, repair_answers_fixed = 0, repair_answers_fixed_walk = 0;
+  /// (source, repair_expand_hops) Repairs sent again with a larger hop limit after no answer.
+  int repair_rings_expanded = 0;
+  /// (source, repair_fix_seen_only) A* repairs of refused answers kept to space seen free.
+  int repair_answers_fixed_seen = 0;
   int changes_on_route = 0;  ///< (source) obstacle changes that touched its route ahead
   int point_searches = 0;    ///< decentralized point searches run (try_continue)
   /// Copies of an already forwarded Search ignored as not new (Table 2 line 4).
@@ -219,7 +223,7 @@ class RobotAgent {
   // motion
   bool segment_blocked(Vec2 a, Vec2 b) const;
   bool segment_known_free(Vec2 a, Vec2 b) const;
-  bool plan_walk(Vec2 target);
+  bool plan_walk(Vec2 target, const std::vector<network::VoronoiPoint>* seen = nullptr);
   bool walk_blocked() const;
   void walk_progress(bool arrived);
   // decentralized: Search (Tables 1-2)
@@ -290,6 +294,8 @@ class RobotAgent {
   bool splice_route(const std::vector<network::VoronoiPoint>& whole, network::RobotId from);
   void repair_timers();
   void repair_done();
+  bool expand_repair_ring();
+  void drive_walk_then_route();
   void check_source_route();
   bool replan_to_route();
   [[nodiscard]] std::uint32_t next_repair_num();
@@ -343,6 +349,8 @@ class RobotAgent {
   std::vector<network::RobotId> repair_heard_;
   double repair_resend_at_ = -1.0;
   double repair_resend_gap_ = 0.0;
+  // Source (repair_expand_hops): repair_answers_received when it sent repair_out_.
+  int answers_at_repair_ = 0;
   // Relay: the ends of the break of its saved path it already asked about (asked once).
   std::optional<std::pair<Vec2, Vec2>> relay_break_;
   // Source: the cells that blocked its route at its latest break (repair_check_seen).

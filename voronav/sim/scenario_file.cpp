@@ -187,6 +187,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
            "link_retries",
            "hop_limit",
            "repair_hops",
+           "repair_expand_hops",
            "collect_s",
            "repair_timeout_s",
            "repair_resend_s",
@@ -196,6 +197,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
            "repair_share_changed",
            "repair_share_met_blocks",
            "repair_fix_answer",
+           "repair_fix_seen_only",
            "repair_resend_new_only",
            "repair_check_seen",
            "path_fallback_after_retries",
@@ -238,6 +240,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   integer("link_retries", o.link_retries, 0, 1000000);
   integer("hop_limit", o.hop_limit, 1, 255);
   integer("repair_hops", o.repair_hops, 1, 255);
+  integer("repair_expand_hops", o.repair_expand_hops, 0, 255);
   pos("collect_s", o.collect_s);
   pos("repair_timeout_s", o.repair_timeout_s);
   nonneg("repair_resend_s", o.repair_resend_s);
@@ -254,6 +257,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   flag("repair_share_changed", o.repair_share_changed);
   flag("repair_share_met_blocks", o.repair_share_met_blocks);
   flag("repair_fix_answer", o.repair_fix_answer);
+  flag("repair_fix_seen_only", o.repair_fix_seen_only);
   flag("repair_resend_new_only", o.repair_resend_new_only);
   flag("repair_check_seen", o.repair_check_seen);
   flag("path_fallback_after_retries", o.path_fallback_after_retries);
@@ -492,6 +496,7 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
       << "  link_retries: " << o.link_retries << "\n"
       << "  hop_limit: " << o.hop_limit << "\n"
       << "  repair_hops: " << o.repair_hops << "\n"
+      << "  repair_expand_hops: " << o.repair_expand_hops << "\n"
       << "  collect_s: " << fmt(o.collect_s) << "\n"
       << "  repair_timeout_s: " << fmt(o.repair_timeout_s) << "\n"
       << "  repair_resend_s: " << fmt(o.repair_resend_s) << "\n"
@@ -501,6 +506,7 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
       << "  repair_share_changed: " << (o.repair_share_changed ? "true" : "false") << "\n"
       << "  repair_share_met_blocks: " << (o.repair_share_met_blocks ? "true" : "false") << "\n"
       << "  repair_fix_answer: " << (o.repair_fix_answer ? "true" : "false") << "\n"
+      << "  repair_fix_seen_only: " << (o.repair_fix_seen_only ? "true" : "false") << "\n"
       << "  repair_resend_new_only: " << (o.repair_resend_new_only ? "true" : "false") << "\n"
       << "  repair_check_seen: " << (o.repair_check_seen ? "true" : "false") << "\n"
       << "  path_fallback_after_retries: " << (o.path_fallback_after_retries ? "true" : "false")

@@ -54,6 +54,7 @@ void expect_same_options(const NetSimOptions& a, const NetSimOptions& b) {
   EXPECT_EQ(a.link_retries, b.link_retries);
   EXPECT_EQ(a.hop_limit, b.hop_limit);
   EXPECT_EQ(a.repair_hops, b.repair_hops);
+  EXPECT_EQ(a.repair_expand_hops, b.repair_expand_hops);
   EXPECT_EQ(a.collect_s, b.collect_s);
   EXPECT_EQ(a.repair_timeout_s, b.repair_timeout_s);
   EXPECT_EQ(a.repair_resend_s, b.repair_resend_s);
@@ -63,6 +64,7 @@ void expect_same_options(const NetSimOptions& a, const NetSimOptions& b) {
   EXPECT_EQ(a.repair_check_seen, b.repair_check_seen);
   EXPECT_EQ(a.repair_share_met_blocks, b.repair_share_met_blocks);
   EXPECT_EQ(a.repair_fix_answer, b.repair_fix_answer);
+  EXPECT_EQ(a.repair_fix_seen_only, b.repair_fix_seen_only);
   EXPECT_EQ(a.path_fallback_after_retries, b.path_fallback_after_retries);
   EXPECT_EQ(a.search_timeout_per_m, b.search_timeout_per_m);
   EXPECT_EQ(a.search_activity_s, b.search_activity_s);
@@ -111,6 +113,7 @@ TEST(ScenarioFile, PaperRunWithEveryOptionSetRoundTripsExactly) {
   o.link_retries = 3;
   o.hop_limit = 20;
   o.repair_hops = 3;
+  o.repair_expand_hops = 12;
   o.collect_s = 2.25;
   o.repair_timeout_s = 9.5;
   o.repair_resend_s = 2.5;
@@ -120,6 +123,7 @@ TEST(ScenarioFile, PaperRunWithEveryOptionSetRoundTripsExactly) {
   o.repair_check_seen = false;
   o.repair_share_met_blocks = !o.repair_share_met_blocks;
   o.repair_fix_answer = !o.repair_fix_answer;
+  o.repair_fix_seen_only = !o.repair_fix_seen_only;
   o.path_fallback_after_retries = false;
   o.search_timeout_per_m = 2.75;
   o.search_activity_s = 31.5;

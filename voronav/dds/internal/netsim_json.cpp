@@ -52,6 +52,8 @@ json agent_report_json(const sim::AgentReport& a) {
           {"repairs_own", a.repairs_own},
           {"repair_answers_fixed", a.repair_answers_fixed},
           {"repair_answers_fixed_walk", a.repair_answers_fixed_walk},
+          {"repair_rings_expanded", a.repair_rings_expanded},
+          {"repair_answers_fixed_seen", a.repair_answers_fixed_seen},
           {"changes_on_route", a.changes_on_route},
           {"point_searches", a.point_searches},
           {"search_copies_ignored", a.search_copies_ignored},
@@ -85,6 +87,8 @@ sim::AgentReport agent_report_from(const json& j) {
   a.repairs_own = j.value("repairs_own", 0);
   a.repair_answers_fixed = j.value("repair_answers_fixed", 0);
   a.repair_answers_fixed_walk = j.value("repair_answers_fixed_walk", 0);
+  a.repair_rings_expanded = j.value("repair_rings_expanded", 0);
+  a.repair_answers_fixed_seen = j.value("repair_answers_fixed_seen", 0);
   a.changes_on_route = j.at("changes_on_route").get<int>();
   a.point_searches = j.value("point_searches", 0);
   a.search_copies_ignored = j.value("search_copies_ignored", 0);
