@@ -140,6 +140,21 @@ struct ExplorationOptions {
   /// both robots had banned every frontier left by 360 s and wandered reactively to 900 s at
   /// 69.1 % coverage.
   bool retry_banned = true;
+  /// Ours (issue 14, stop 22, willow 16 robots frontier seed 1): a frontier goal that a robot
+  /// reached and that is still a frontier at the next allocation (its unknown cells cannot be seen
+  /// from there) is banned for the whole team, not only for that robot: the robots share one map
+  /// and the same laser, and robots do not occlude the mapping scans, so what one robot cannot
+  /// observe from that spot no robot can. The ban ends when the team map within 1 m of the goal
+  /// changes (new known cells: new information). Without it every robot had to reach each such
+  /// frontier itself before giving it up, and the nearest-frontier rule sent up to 12 robots into a
+  /// 1 m wide dead-end pocket to do so (5 stalled, boxed in).
+  bool share_bans = false;
+  /// Ours (issue 14, stop 22), kFrontier only: a frontier that crowd_limit other robots are at
+  /// already (within 2 m of its target, or heading to it) is left out of a robot's nearest-frontier
+  /// choice unless the robot is within 2 m of it itself; 0 = off (Yamauchi's rule: every robot
+  /// takes its nearest frontier). The nearest-frontier rule herds the team to the same frontiers,
+  /// and on willow (16 robots) herds of 3-12 robots boxed robots in (stalled) in dead ends.
+  int crowd_limit = 0;
   /// The front guard's rule (see FrontGuard); every method.
   FrontGuard guard = FrontGuard::kCorridor;
   double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
@@ -236,6 +251,10 @@ struct ExplorationResult {
   int idle_unsticks = 0;  ///< of those, by ExplorationOptions::idle_unstick
   int yields = 0;         ///< back-offs from a held-up robot of higher index (yield_to_held)
   int ban_resets = 0;     ///< goalless robots that forgot their soft bans (retry_banned)
+  /// Reached goals whose frontier stayed, banned for the whole team (share_bans).
+  int shared_bans = 0;
+  /// (robot, frontier) pairs left out of the nearest-frontier choice as crowded (crowd_limit).
+  int crowd_skips = 0;
   /// Front guard stops (a robot that drove forward the step before and is stopped now): by a wall
   /// and by a robot (the right of way applies).
   int guard_wall_stops = 0;
