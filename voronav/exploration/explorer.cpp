@@ -812,8 +812,8 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     std::vector<Frontier> fr = find_frontiers(tg, trav, o.frontier);
     const std::size_t n_frontiers = fr.size();
     if (o.share_bans) {
-      // Bans whose surroundings the map has changed since end; goals reached at least one scan
-      // ago are judged.
+      // A ban ends when the map around it has changed; goals reached at least one scan ago are
+      // judged.
       std::erase_if(team_bans, [&](const TeamBan& b) { return known_near(b.at) != b.known; });
       std::erase_if(reached_goals, [&](const TeamBan& p) {
         if (t - p.t < o.map_period) return false;  // no scan from there yet
