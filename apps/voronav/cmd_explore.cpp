@@ -37,6 +37,7 @@ struct ExploreArgs {
   std::string retry_banned = "on";
   std::string share_bans = "off";
   int crowd_limit = 0;
+  std::string drop_goalless_routes = "off";
   std::string guard = "corridor";
   std::uint64_t seed = 1;
   std::string start;
@@ -127,6 +128,7 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                 {"retry_banned", a.retry_banned},
                 {"share_bans", a.share_bans},
                 {"crowd_limit", a.crowd_limit},
+                {"drop_goalless_routes", a.drop_goalless_routes},
                 {"guard", a.guard},
                 {"seed", a.seed},
                 {"stop_at_coverage", a.stop_at}};
@@ -170,6 +172,7 @@ void run(const ExploreArgs& a) {
   o.retry_banned = a.retry_banned == "on";
   o.share_bans = a.share_bans == "on";
   o.crowd_limit = a.crowd_limit;
+  o.drop_goalless_routes = a.drop_goalless_routes == "on";
   o.guard = exploration::parse_front_guard(a.guard);
   o.seed = a.seed;
   o.stop_at_coverage = a.stop_at;
@@ -302,6 +305,11 @@ void setup(CLI::App& app) {
                   "of its target or heading to it) is not a robot's nearest-frontier choice unless "
                   "it is within 2 m itself (ours); 0 = off (Yamauchi)")
       ->check(CLI::Range(0, 64))
+      ->capture_default_str();
+  cmd->add_option("--drop-goalless-routes", args->drop_goalless_routes,
+                  "frontier, coordinated, tree-frontier: a robot left without a goal stops "
+                  "following the route to its old goal (on, ours) or drives it on (off)")
+      ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   cmd->add_option("--guard", args->guard,
                   "every method: the front guard of a robot on its route stops for anything "

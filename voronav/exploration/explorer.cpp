@@ -924,6 +924,11 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           a.ban_reset_t = t;
           ++result.ban_resets;
         }
+        // ExplorationOptions::drop_goalless_routes: the route led to a goal that is gone.
+        if (o.drop_goalless_routes && a.goal && a.mode == AgentMode::kFollow) {
+          a.route.clear();
+          ++result.route_drops;
+        }
         a.goal.reset();
         if (a.mode == AgentMode::kFollow && a.route.empty()) a.mode = AgentMode::kReactive;
         continue;
@@ -1269,7 +1274,8 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"escapes\":" << r.escapes << ",\"unsticks\":" << r.unsticks
      << ",\"idle_unsticks\":" << r.idle_unsticks << ",\"yields\":" << r.yields
      << ",\"ban_resets\":" << r.ban_resets << ",\"shared_bans\":" << r.shared_bans
-     << ",\"crowd_skips\":" << r.crowd_skips << ",\"guard_wall_stops\":" << r.guard_wall_stops
+     << ",\"crowd_skips\":" << r.crowd_skips << ",\"route_drops\":" << r.route_drops
+     << ",\"guard_wall_stops\":" << r.guard_wall_stops
      << ",\"guard_robot_stops\":" << r.guard_robot_stops
      << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;
