@@ -1,8 +1,9 @@
 // ExplorationOptions::drop_goalless_routes (issue 14, stop 22): a frontier-method robot that the
 // allocation leaves without a goal stops following the route to the goal it had, instead of
 // driving on to a frontier that is gone. Traced on willow (16 robots, frontier, seed 8): such a
-// robot stood 0.47 m in front of a robot with a goal, which stalled. Willow seeds 1-8: 1 stalled
-// robot with it, 6 without (bench/results/exploration.md, stop 22); off by default.
+// robot stood 0.47 m in front of a robot with a goal, which stalled. Willow seeds 1-16: 3 stalled
+// robots with it, 7 without, but lower mean coverage (bench/results/exploration.md, stop 22); off
+// by default.
 #include <gtest/gtest.h>
 
 #include "voronav/exploration/explorer.hpp"
