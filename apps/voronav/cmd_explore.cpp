@@ -35,6 +35,9 @@ struct ExploreArgs {
   std::string idle_unstick = "on";
   std::string yield_to_held = "on";
   std::string retry_banned = "on";
+  std::string share_bans = "off";
+  int crowd_limit = 0;
+  std::string drop_goalless_routes = "off";
   std::string guard = "corridor";
   std::uint64_t seed = 1;
   std::string start;
@@ -123,6 +126,9 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                 {"idle_unstick", a.idle_unstick},
                 {"yield_to_held", a.yield_to_held},
                 {"retry_banned", a.retry_banned},
+                {"share_bans", a.share_bans},
+                {"crowd_limit", a.crowd_limit},
+                {"drop_goalless_routes", a.drop_goalless_routes},
                 {"guard", a.guard},
                 {"seed", a.seed},
                 {"stop_at_coverage", a.stop_at}};
@@ -164,6 +170,9 @@ void run(const ExploreArgs& a) {
   o.idle_unstick = a.idle_unstick == "on";
   o.yield_to_held = a.yield_to_held == "on";
   o.retry_banned = a.retry_banned == "on";
+  o.share_bans = a.share_bans == "on";
+  o.crowd_limit = a.crowd_limit;
+  o.drop_goalless_routes = a.drop_goalless_routes == "on";
   o.guard = exploration::parse_front_guard(a.guard);
   o.seed = a.seed;
   o.stop_at_coverage = a.stop_at;
@@ -283,6 +292,23 @@ void setup(CLI::App& app) {
   cmd->add_option("--retry-banned", args->retry_banned,
                   "frontier, coordinated, tree-frontier: a robot left without a goal may take "
                   "again the goals it gave up when blocked, once per 60 s (on, ours) or never")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--share-bans", args->share_bans,
+                  "frontier, coordinated, tree-frontier: a goal a robot reached while its "
+                  "frontier stayed (unobservable from there) is banned for every robot (on, ours) "
+                  "or only for that robot (off)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--crowd-limit", args->crowd_limit,
+                  "frontier: a frontier that this many other robots are at already (within 2 m "
+                  "of its target or heading to it) is not a robot's nearest-frontier choice unless "
+                  "it is within 2 m itself (ours); 0 = off (Yamauchi)")
+      ->check(CLI::Range(0, 64))
+      ->capture_default_str();
+  cmd->add_option("--drop-goalless-routes", args->drop_goalless_routes,
+                  "frontier, coordinated, tree-frontier: a robot left without a goal stops "
+                  "following the route to its old goal (on, ours) or drives it on (off)")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   cmd->add_option("--guard", args->guard,

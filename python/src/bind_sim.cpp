@@ -365,6 +365,12 @@ void bind_sim(py::module_& m) {
                      "every method (CLI --yield-to-held on|off)")
       .def_readwrite("retry_banned", &ex::ExplorationOptions::retry_banned,
                      "frontier methods (CLI --retry-banned on|off)")
+      .def_readwrite("share_bans", &ex::ExplorationOptions::share_bans,
+                     "frontier methods (CLI --share-bans on|off)")
+      .def_readwrite("crowd_limit", &ex::ExplorationOptions::crowd_limit,
+                     "frontier: 0 = off (CLI --crowd-limit N)")
+      .def_readwrite("drop_goalless_routes", &ex::ExplorationOptions::drop_goalless_routes,
+                     "frontier methods (CLI --drop-goalless-routes on|off)")
       .def_readwrite("guard", &ex::ExplorationOptions::guard,
                      "every method: FrontGuard cone|corridor (CLI --guard)")
       .def_readwrite("controller", &ex::ExplorationOptions::controller,

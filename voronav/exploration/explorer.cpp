@@ -9,6 +9,7 @@
 #include <random>
 #include <sstream>
 
+#include "voronav/core/cell_iterators.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/core/stepper.hpp"
 #include "voronav/exploration/internal/block_clock.hpp"
@@ -230,6 +231,8 @@ void ExplorationOptions::validate() const {
   if (!(tree_start_time >= 0.0) || !std::isfinite(tree_start_time))
     throw Error("ExplorationOptions.tree_start_time", 0, "expected a finite number >= 0");
   if (!(clearance >= 0.0)) throw Error("ExplorationOptions.clearance", 0, "expected >= 0");
+  if (crowd_limit < 0 || crowd_limit > 64)
+    throw Error("ExplorationOptions.crowd_limit", 0, "expected 0..64");
   if (map_beam_stride < 1) throw Error("ExplorationOptions.map_beam_stride", 0, "expected >= 1");
   if (start && !start->is_finite()) throw Error("--start", 0, "start must be finite");
   if (std::isnan(stop_at_coverage)) throw Error("ExplorationOptions.stop_at_coverage", 0, "NaN");
@@ -397,6 +400,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
 
   const double plan_radius = body + o.clearance;
   constexpr double kRobotAwareRange = 3.0;  // [m] robots nearer than this block planning
+  constexpr double kCrowdRange = 2.0;       // [m] ExplorationOptions::crowd_limit
   BinaryGrid trav;
   planning::BfsFlood flood;
   const bool tree_method =
@@ -740,6 +744,49 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   // look into unknown space as candidate targets (costs on the grid where only known obstacles
   // block) and ranks every target by its information gain (the unknown fraction around it).
   planning::BfsFlood flood_opt;
+  // ExplorationOptions::share_bans: a goal reached is banned for every robot when, at an
+  // allocation at least one scan later, its frontier is still there and no unknown cell next to
+  // it is in sight of its target cell (a straight line through known free cells within the laser's
+  // range): no robot standing there can observe it. The ban ends when the team map within
+  // kBanWatch of the goal changes (new known cells: new information).
+  struct TeamBan {
+    Vec2 at;
+    std::size_t known = 0;  // known cells of the team map within kBanWatch of `at`
+    double t = 0.0;         // [s] when the goal was reached
+  };
+  constexpr double kBanWatch = 1.0;    // [m]
+  std::vector<TeamBan> reached_goals;  // reached, not yet judged
+  std::vector<TeamBan> team_bans;
+  const auto observable_from_target = [&](const OccupancyGrid& map, const Frontier& f) {
+    const Vec2 tp = g.cell_center(f.target);
+    for (const Cell c : f.cells)
+      for (int k = 0; k < 4; ++k) {
+        const Cell u = c + kNeighbours8[k];
+        if (!map.contains(u) || map[u] != kUnknown) continue;
+        if (distance(g.cell_center(u), tp) > o.laser.range_max) continue;
+        if (for_each_line_cell(f.target, u, [&](Cell q) { return q == u || map[q] == kFree; }))
+          return true;
+      }
+    return false;
+  };
+  const auto known_near = [&](Vec2 p) {
+    const auto c = g.world_to_cell(p);
+    std::size_t n = 0;
+    if (!c) return n;
+    const auto& l = team.log_odds();
+    const int r = static_cast<int>(std::ceil(kBanWatch / g.resolution));
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
+        const Cell q{c->x + dx, c->y + dy};
+        if (dx * dx + dy * dy <= r * r && g.contains(q) && l[q] != 0.0F) ++n;
+      }
+    return n;
+  };
+  const auto team_banned = [&](Vec2 p) {
+    for (const TeamBan& b : team_bans)
+      if (distance(b.at, p) < 0.5) return true;
+    return false;
+  };
   // Robot-aware planning: for robot i, the discs of the other robots within kRobotAwareRange
   // block `trav` (a robot centre cannot come within two body radii of another's), so a robot
   // plans around a robot in its way, and a goal reachable only through a crowd costs the detour
@@ -764,6 +811,22 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     trav = traversable_of(tg, plan_radius);
     std::vector<Frontier> fr = find_frontiers(tg, trav, o.frontier);
     const std::size_t n_frontiers = fr.size();
+    if (o.share_bans) {
+      // A ban ends when the map around it has changed; goals reached at least one scan ago are
+      // judged.
+      std::erase_if(team_bans, [&](const TeamBan& b) { return known_near(b.at) != b.known; });
+      std::erase_if(reached_goals, [&](const TeamBan& p) {
+        if (t - p.t < o.map_period) return false;  // no scan from there yet
+        for (std::size_t f = 0; f < n_frontiers; ++f)
+          if (distance(g.cell_center(fr[f].target), p.at) < 0.5 &&
+              !observable_from_target(tg, fr[f]) && !team_banned(p.at)) {
+            team_bans.push_back({p.at, known_near(p.at), t});
+            ++result.shared_bans;
+            break;
+          }
+        return true;
+      });
+    }
     std::vector<double> gains;
     BinaryGrid opt;
     if (hybrid) {
@@ -782,6 +845,24 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         gains.push_back(gain);
       }
     }
+    // ExplorationOptions::crowd_limit (kFrontier): robots at a frontier = within kCrowdRange of
+    // its target or heading to it (an earlier robot's choice in this allocation, else its goal).
+    std::vector<std::optional<Vec2>> heading(agents.size());
+    for (std::size_t i = 0; i < agents.size(); ++i)
+      if (agents[i]->goal && !agents[i]->goal_leaf) heading[i] = agents[i]->goal;
+    const auto crowded = [&](std::size_t i, std::size_t f) {
+      if (o.crowd_limit <= 0 || o.method != ExplorationMethod::kFrontier) return false;
+      const Vec2 tp = g.cell_center(fr[f].target);
+      if (distance(agents[i]->body.true_pose().position, tp) < kCrowdRange) return false;
+      int n = 0;
+      for (std::size_t j = 0; j < agents.size(); ++j)
+        if (j != i && (distance(agents[j]->body.true_pose().position, tp) < kCrowdRange ||
+                       (heading[j] && distance(*heading[j], tp) < 0.5)))
+          ++n;
+      if (n < o.crowd_limit) return false;
+      ++result.crowd_skips;
+      return true;
+    };
     std::vector<std::vector<double>> costs(active.size(), std::vector<double>(fr.size(), -1.0));
     std::vector<std::vector<std::vector<Vec2>>> paths(active.size());
     for (std::size_t r = 0; r < active.size(); ++r) {
@@ -792,8 +873,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           if (distance(b, tp) < 0.5) return true;
         for (const Vec2& b : a.soft_bans)
           if (distance(b, tp) < 0.5) return true;
-
-        return false;
+        return o.share_bans && team_banned(tp);
       };
       if (fr.size() > n_frontiers) {
         // Leaves are costed robot-aware too, as the frontiers below: without it leaf routes ran
@@ -816,7 +896,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       for (std::size_t f = 0; f < n_frontiers; ++f) {
         const Vec2 tp = g.cell_center(fr[f].target);
         const std::int32_t s = flood.steps(trav, fr[f].target);
-        if (!banned(tp) && s >= 0) costs[r][f] = s * g.resolution;
+        if (!banned(tp) && s >= 0 && !crowded(active[r], f)) costs[r][f] = s * g.resolution;
       }
       // Paths only for the frontiers this robot might take are made below (same flood reused).
       paths[r].resize(fr.size());
@@ -826,6 +906,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       if (!mine.empty() && mine[0] >= 0) {
         const auto k = static_cast<std::size_t>(mine[0]);
         paths[r][k] = descend(trav, flood, fr[k].target);
+        if (o.crowd_limit > 0) heading[active[r]] = g.cell_center(fr[k].target);
       }
       unmark(marked);
     }
@@ -842,6 +923,11 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           a.soft_bans.clear();
           a.ban_reset_t = t;
           ++result.ban_resets;
+        }
+        // ExplorationOptions::drop_goalless_routes: the route led to a goal that is gone.
+        if (o.drop_goalless_routes && a.goal && a.mode == AgentMode::kFollow) {
+          a.route.clear();
+          ++result.route_drops;
         }
         a.goal.reset();
         if (a.mode == AgentMode::kFollow && a.route.empty()) a.mode = AgentMode::kReactive;
@@ -981,6 +1067,9 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
             // from here (unknown cells walled in, e.g. in clutter): not this robot's goal again.
             // Chasing it again kept a robot circling on one spot (willow, 16 robots).
             a.blacklist.push_back(*a.goal);
+            // ExplorationOptions::share_bans: nor any robot's (same map, same laser), when the
+            // frontier is still there at the next allocation.
+            if (o.share_bans) reached_goals.push_back({*a.goal, 0, t});
           }
           a.goal.reset();
           a.goal_leaf = false;
@@ -1184,7 +1273,9 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"watchdog_events\":" << r.watchdog_events << ",\"leg_replans\":" << r.leg_replans
      << ",\"escapes\":" << r.escapes << ",\"unsticks\":" << r.unsticks
      << ",\"idle_unsticks\":" << r.idle_unsticks << ",\"yields\":" << r.yields
-     << ",\"ban_resets\":" << r.ban_resets << ",\"guard_wall_stops\":" << r.guard_wall_stops
+     << ",\"ban_resets\":" << r.ban_resets << ",\"shared_bans\":" << r.shared_bans
+     << ",\"crowd_skips\":" << r.crowd_skips << ",\"route_drops\":" << r.route_drops
+     << ",\"guard_wall_stops\":" << r.guard_wall_stops
      << ",\"guard_robot_stops\":" << r.guard_robot_stops
      << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;

@@ -140,6 +140,33 @@ struct ExplorationOptions {
   /// both robots had banned every frontier left by 360 s and wandered reactively to 900 s at
   /// 69.1 % coverage.
   bool retry_banned = true;
+  /// Ours (issue 14, stop 22, willow 16 robots frontier seed 1), frontier methods: a frontier goal
+  /// that a robot reached is banned for the whole team, not only for that robot, when at an
+  /// allocation at least one scan later its frontier is still there and no unknown cell next to it
+  /// is in sight of its target cell (a line through known free cells within the laser's range):
+  /// the robots share one map and the same laser, and robots do not occlude the mapping scans, so
+  /// no robot can observe it from there. The ban ends when the team map within 1 m of the goal
+  /// gains known cells (new information). Without it every robot had to reach each such frontier
+  /// itself, and the nearest-frontier rule sent up to 12 robots into a 1 m wide dead-end pocket
+  /// (5 stalled, boxed in; with it 0, at most 2 robots there). Off: over willow seeds 1-8 it
+  /// stalled as many robots (6) in more runs (5 of 8 against 2), so it is not the cure
+  /// (bench/results/exploration.md, stop 22).
+  bool share_bans = false;
+  /// Ours (issue 14, stop 22), kFrontier only: a frontier that crowd_limit other robots are at
+  /// already (within 2 m of its target, or heading to it) is left out of a robot's nearest-frontier
+  /// choice unless the robot is within 2 m of it itself; 0 = off (Yamauchi's rule: every robot
+  /// takes its nearest frontier). Meant against the herds of the nearest-frontier rule; willow,
+  /// 16 robots, seeds 1-8, limit 3: 3 stalled robots in 3 runs (off: 6 in 2), mean t90 607 s
+  /// (off: 557 s), so off.
+  int crowd_limit = 0;
+  /// Ours (issue 14, stop 22), frontier methods: a robot that the allocation leaves without a goal
+  /// stops following the route to the goal it had (that frontier is gone or banned) and searches
+  /// reactively, where idle_unstick looks after it. Before, it drove the old route on; traced on
+  /// willow (16 robots, frontier, seed 8): such a robot stood 0.47 m in front of a robot with a
+  /// goal, which stalled. Willow seeds 1-16: 3 stalled robots in 2 runs (off: 7 in 3), but mean
+  /// coverage 97.69 % (off: 98.33 %) with two runs under 95 %, and coordinated seed 2 stalled a
+  /// robot (off: 0), so off (stop 22).
+  bool drop_goalless_routes = false;
   /// The front guard's rule (see FrontGuard); every method.
   FrontGuard guard = FrontGuard::kCorridor;
   double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
@@ -236,6 +263,11 @@ struct ExplorationResult {
   int idle_unsticks = 0;  ///< of those, by ExplorationOptions::idle_unstick
   int yields = 0;         ///< back-offs from a held-up robot of higher index (yield_to_held)
   int ban_resets = 0;     ///< goalless robots that forgot their soft bans (retry_banned)
+  /// Reached goals banned for the whole team as out of sight of their target (share_bans).
+  int shared_bans = 0;
+  /// (robot, frontier) pairs left out of the nearest-frontier choice as crowded (crowd_limit).
+  int crowd_skips = 0;
+  int route_drops = 0;  ///< routes dropped by goalless robots (drop_goalless_routes)
   /// Front guard stops (a robot that drove forward the step before and is stopped now): by a wall
   /// and by a robot (the right of way applies).
   int guard_wall_stops = 0;
