@@ -516,6 +516,18 @@ void RobotAgent::on_repair_path(PathMessage m, RobotId from) {
   if (!m.relays.empty()) send_reliable(m.relays.back(), m);
 }
 
+/// Source: sends its Repair `m` to its neighbours (Table 5) and keeps it as the one it waits an
+/// answer for; notes who hears it now (repair_resend_new_only) and when to send it again.
+void RobotAgent::send_repair(const RepairMessage& m) {
+  repair_out_ = m;
+  repair_heard_.clear();
+  for (const auto& n : transport_.nearby(r_.id))
+    repair_heard_.push_back(n.id);
+  repair_resend_gap_ = opt().repair_resend_s;
+  repair_resend_at_ = repair_resend_gap_ > 0.0 ? now_ + repair_resend_gap_ : -1.0;
+  broadcast(m, 1);
+}
+
 /// repair_expand_hops (source), at its repair timeout: when no answer at all reached it since it
 /// sent its Repair, it sends a new Repair (new Num, so every robot handles it again, Table 4
 /// line 1) with twice the hop limit, up to repair_expand_hops and hop_limit, and waits
@@ -536,14 +548,8 @@ bool RobotAgent::expand_repair_ring() {
   ++report_.repair_rings_expanded;
   log_repair(false, "got no answer and asks again up to " + std::to_string(next) +
                         " hops (Repair message, expanding ring)");
-  repair_out_ = m;
   blocked_since_ = now_;
-  repair_heard_.clear();
-  for (const auto& n : transport_.nearby(s.id))
-    repair_heard_.push_back(n.id);
-  repair_resend_gap_ = opt().repair_resend_s;
-  repair_resend_at_ = repair_resend_gap_ > 0.0 ? now_ + repair_resend_gap_ : -1.0;
-  broadcast(m, 1);
+  send_repair(m);
   return true;
 }
 
@@ -735,14 +741,8 @@ void RobotAgent::check_source_route() {
   } else {
     log_repair(false, "is blocked and asks its neighbours (Repair message)");
   }
-  repair_out_ = m;
   answers_at_repair_ = report_.repair_answers_received;
-  repair_heard_.clear();
-  for (const auto& n : transport_.nearby(s.id))
-    repair_heard_.push_back(n.id);
-  repair_resend_gap_ = opt().repair_resend_s;
-  repair_resend_at_ = repair_resend_gap_ > 0.0 ? now_ + repair_resend_gap_ : -1.0;
-  broadcast(m, 1);
+  send_repair(m);
 }
 
 /// Source, when no Repair answered in time: A* on its own map to the first route point past the

@@ -295,6 +295,7 @@ class RobotAgent {
   void repair_timers();
   void repair_done();
   bool expand_repair_ring();
+  void send_repair(const network::RepairMessage& m);
   void drive_walk_then_route();
   void check_source_route();
   bool replan_to_route();
