@@ -9,12 +9,12 @@
 #include <random>
 #include <sstream>
 
-#include "voronav/core/cell_iterators.hpp"
 #include "voronav/core/error.hpp"
 #include "voronav/core/stepper.hpp"
 #include "voronav/exploration/internal/block_clock.hpp"
 #include "voronav/exploration/internal/front_guard.hpp"
 #include "voronav/exploration/internal/right_of_way.hpp"
+#include "voronav/exploration/internal/team_bans.hpp"
 #include "voronav/exploration/unstick.hpp"
 #include "voronav/field/distance_transform.hpp"
 #include "voronav/mapping/occupancy_map.hpp"
@@ -744,49 +744,8 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   // look into unknown space as candidate targets (costs on the grid where only known obstacles
   // block) and ranks every target by its information gain (the unknown fraction around it).
   planning::BfsFlood flood_opt;
-  // ExplorationOptions::share_bans: a goal reached is banned for every robot when, at an
-  // allocation at least one scan later, its frontier is still there and no unknown cell next to
-  // it is in sight of its target cell (a straight line through known free cells within the laser's
-  // range): no robot standing there can observe it. The ban ends when the team map within
-  // kBanWatch of the goal changes (new known cells: new information).
-  struct TeamBan {
-    Vec2 at;
-    std::size_t known = 0;  // known cells of the team map within kBanWatch of `at`
-    double t = 0.0;         // [s] when the goal was reached
-  };
-  constexpr double kBanWatch = 1.0;    // [m]
-  std::vector<TeamBan> reached_goals;  // reached, not yet judged
-  std::vector<TeamBan> team_bans;
-  const auto observable_from_target = [&](const OccupancyGrid& map, const Frontier& f) {
-    const Vec2 tp = g.cell_center(f.target);
-    for (const Cell c : f.cells)
-      for (int k = 0; k < 4; ++k) {
-        const Cell u = c + kNeighbours8[k];
-        if (!map.contains(u) || map[u] != kUnknown) continue;
-        if (distance(g.cell_center(u), tp) > o.laser.range_max) continue;
-        if (for_each_line_cell(f.target, u, [&](Cell q) { return q == u || map[q] == kFree; }))
-          return true;
-      }
-    return false;
-  };
-  const auto known_near = [&](Vec2 p) {
-    const auto c = g.world_to_cell(p);
-    std::size_t n = 0;
-    if (!c) return n;
-    const auto& l = team.log_odds();
-    const int r = static_cast<int>(std::ceil(kBanWatch / g.resolution));
-    for (int dy = -r; dy <= r; ++dy)
-      for (int dx = -r; dx <= r; ++dx) {
-        const Cell q{c->x + dx, c->y + dy};
-        if (dx * dx + dy * dy <= r * r && g.contains(q) && l[q] != 0.0F) ++n;
-      }
-    return n;
-  };
-  const auto team_banned = [&](Vec2 p) {
-    for (const TeamBan& b : team_bans)
-      if (distance(b.at, p) < 0.5) return true;
-    return false;
-  };
+  // ExplorationOptions::share_bans (internal/team_bans.hpp).
+  internal::TeamBans team_bans;
   // Robot-aware planning: for robot i, the discs of the other robots within kRobotAwareRange
   // block `trav` (a robot centre cannot come within two body radii of another's), so a robot
   // plans around a robot in its way, and a goal reachable only through a crowd costs the detour
@@ -811,22 +770,10 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     trav = traversable_of(tg, plan_radius);
     std::vector<Frontier> fr = find_frontiers(tg, trav, o.frontier);
     const std::size_t n_frontiers = fr.size();
-    if (o.share_bans) {
-      // A ban ends when the map around it has changed; goals reached at least one scan ago are
-      // judged.
-      std::erase_if(team_bans, [&](const TeamBan& b) { return known_near(b.at) != b.known; });
-      std::erase_if(reached_goals, [&](const TeamBan& p) {
-        if (t - p.t < o.map_period) return false;  // no scan from there yet
-        for (std::size_t f = 0; f < n_frontiers; ++f)
-          if (distance(g.cell_center(fr[f].target), p.at) < 0.5 &&
-              !observable_from_target(tg, fr[f]) && !team_banned(p.at)) {
-            team_bans.push_back({p.at, known_near(p.at), t});
-            ++result.shared_bans;
-            break;
-          }
-        return true;
-      });
-    }
+    if (o.share_bans)
+      result.shared_bans +=
+          team_bans.update(tg, team.log_odds(), std::span<const Frontier>(fr.data(), n_frontiers),
+                           o.laser.range_max, t, o.map_period);
     std::vector<double> gains;
     BinaryGrid opt;
     if (hybrid) {
@@ -873,7 +820,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           if (distance(b, tp) < 0.5) return true;
         for (const Vec2& b : a.soft_bans)
           if (distance(b, tp) < 0.5) return true;
-        return o.share_bans && team_banned(tp);
+        return o.share_bans && team_bans.banned(tp);
       };
       if (fr.size() > n_frontiers) {
         // Leaves are costed robot-aware too, as the frontiers below: without it leaf routes ran
@@ -1069,7 +1016,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
             a.blacklist.push_back(*a.goal);
             // ExplorationOptions::share_bans: nor any robot's (same map, same laser), when the
             // frontier is still there at the next allocation.
-            if (o.share_bans) reached_goals.push_back({*a.goal, 0, t});
+            if (o.share_bans) team_bans.reached(*a.goal, t);
           }
           a.goal.reset();
           a.goal_leaf = false;
