@@ -81,6 +81,12 @@ class Options:
     stall_distance: float  # [m]
     unstick: bool
     frontier_unstick: bool
+    idle_unstick: bool  # frontier methods, goalless robots
+    yield_to_held: bool
+    retry_banned: bool  # frontier methods
+    share_bans: bool  # frontier methods: a reached goal no robot can observe is banned for all
+    crowd_limit: int  # frontier: skip a frontier N other robots are at or heading to (0 = off)
+    drop_goalless_routes: bool  # frontier methods
     guard: FrontGuard  # front guard: cone | corridor (default)
     controller: ControllerOptions  # tree's reactive search
     frontier_controller: ControllerOptions  # frontier methods' reactive windows
