@@ -231,6 +231,12 @@ void run(const ExploreArgs& a) {
   }
 }
 
+/// An on|off switch of `explore`, its default shown in --help.
+void add_on_off(CLI::App* cmd, const std::string& name, std::string& value,
+                const std::string& help) {
+  cmd->add_option(name, value, help)->check(CLI::IsMember({"on", "off"}))->capture_default_str();
+}
+
 void setup(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "explore",
@@ -269,48 +275,34 @@ void setup(CLI::App& app) {
          "methods' reactive windows keep 0.4)")
       ->check(finite_range(0.0, 10.0))
       ->capture_default_str();
-  cmd->add_option("--unstick", args->unstick,
-                  "tree: a robot on one spot for 20 s drives to open space nearby around the "
-                  "other robots (on, ours) or not (off)")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->capture_default_str();
-  cmd->add_option("--frontier-unstick", args->frontier_unstick,
-                  "frontier, coordinated, tree-frontier: the same (off by default: on willow it "
-                  "stalled more robots)")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->capture_default_str();
-  cmd->add_option("--idle-unstick", args->idle_unstick,
-                  "frontier, coordinated, tree-frontier: a robot without a goal on one spot for "
-                  "20 s drives to open space even with --frontier-unstick off (on, ours) or not")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->capture_default_str();
-  cmd->add_option("--yield-to-held", args->yield_to_held,
-                  "every method: a robot stopped by a robot in front that is held up itself "
-                  "backs off whatever their indices (on, ours) or only from a lower index (off)")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->capture_default_str();
-  cmd->add_option("--retry-banned", args->retry_banned,
-                  "frontier, coordinated, tree-frontier: a robot left without a goal may take "
-                  "again the goals it gave up when blocked, once per 60 s (on, ours) or never")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->capture_default_str();
-  cmd->add_option("--share-bans", args->share_bans,
-                  "frontier, coordinated, tree-frontier: a goal a robot reached while its "
-                  "frontier stayed (unobservable from there) is banned for every robot (on, ours) "
-                  "or only for that robot (off)")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->capture_default_str();
+  add_on_off(cmd, "--unstick", args->unstick,
+             "tree: a robot on one spot for 20 s drives to open space nearby around the "
+             "other robots (on, ours) or not (off)");
+  add_on_off(cmd, "--frontier-unstick", args->frontier_unstick,
+             "frontier, coordinated, tree-frontier: the same (off by default: on willow it "
+             "stalled more robots)");
+  add_on_off(cmd, "--idle-unstick", args->idle_unstick,
+             "frontier, coordinated, tree-frontier: a robot without a goal on one spot for "
+             "20 s drives to open space even with --frontier-unstick off (on, ours) or not");
+  add_on_off(cmd, "--yield-to-held", args->yield_to_held,
+             "every method: a robot stopped by a robot in front that is held up itself "
+             "backs off whatever their indices (on, ours) or only from a lower index (off)");
+  add_on_off(cmd, "--retry-banned", args->retry_banned,
+             "frontier, coordinated, tree-frontier: a robot left without a goal may take "
+             "again the goals it gave up when blocked, once per 60 s (on, ours) or never");
+  add_on_off(cmd, "--share-bans", args->share_bans,
+             "frontier, coordinated, tree-frontier: a goal a robot reached while its "
+             "frontier stayed (unobservable from there) is banned for every robot (on, ours) "
+             "or only for that robot (off)");
   cmd->add_option("--crowd-limit", args->crowd_limit,
                   "frontier: a frontier that this many other robots are at already (within 2 m "
                   "of its target or heading to it) is not a robot's nearest-frontier choice unless "
                   "it is within 2 m itself (ours); 0 = off (Yamauchi)")
       ->check(CLI::Range(0, 64))
       ->capture_default_str();
-  cmd->add_option("--drop-goalless-routes", args->drop_goalless_routes,
-                  "frontier, coordinated, tree-frontier: a robot left without a goal stops "
-                  "following the route to its old goal (on, ours) or drives it on (off)")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->capture_default_str();
+  add_on_off(cmd, "--drop-goalless-routes", args->drop_goalless_routes,
+             "frontier, coordinated, tree-frontier: a robot left without a goal stops "
+             "following the route to its old goal (on, ours) or drives it on (off)");
   cmd->add_option("--guard", args->guard,
                   "every method: the front guard of a robot on its route stops for anything "
                   "within 0.24 m in a +-40 deg fan (cone) or for a robot there and for a wall only "
