@@ -3,9 +3,11 @@
 // laser, robots do not occlude the mapping scans), so the team gives it up once. Traced on
 // willow (16 robots, frontier, seed 1): without it every robot had to reach each unobservable
 // frontier itself, the nearest-frontier rule herded 12 robots into a 1 m wide dead-end pocket and
-// 5 stalled there, boxed in by each other.
+// 5 stalled there, boxed in by each other. Also ExplorationOptions::crowd_limit on the same
+// room: no more robots head to the last frontier than the limit allows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "voronav/exploration/explorer.hpp"
@@ -80,6 +82,51 @@ TEST(ShareBans, TheTeamGivesUpAnUnobservableFrontierOnce) {
     EXPECT_LT(v_on.robots, v_off.robots) << seed;
     EXPECT_LT(v_on.robot_s, 0.5 * v_off.robot_s) << seed;
     // The channel stays unseen either way; nothing else is lost.
+    EXPECT_NEAR(on.coverage, off.coverage, 1e-9) << seed;
+    EXPECT_EQ(on.stalled_robots, 0) << seed;
+    EXPECT_EQ(on.collisions, 0) << seed;
+  }
+}
+
+// The most robots at one time within 1 m of the crack's opening (1 s frames).
+int most_at_crack(const ExplorationResult& r) {
+  const Vec2 opening{5.3, 8.1};
+  int most = 0;
+  for (const ExplorationFrame& f : r.recording.frames) {
+    int n = 0;
+    for (const auto& p : f.poses)
+      n += distance(p.position, opening) < 1.0 ? 1 : 0;
+    most = std::max(most, n);
+  }
+  return most;
+}
+
+// ExplorationOptions::crowd_limit (nearest frontier): in the same room, the crack's frontier is
+// the team's last goal; without a limit every goalless robot heads there.
+TEST(CrowdLimit, NoMoreRobotsGoToTheLastFrontierThanTheLimit) {
+  for (const std::uint64_t seed : {1U, 4U, 6U}) {
+    ExplorationOptions o;
+    o.method = ExplorationMethod::kFrontier;
+    o.robots = 4;
+    o.time_limit = 240.0;
+    o.seed = seed;
+    o.start = Vec2{1.0, 1.0};
+    o.frontier.min_frontier_cells = 1;
+    const ExplorationResult off = run_exploration(room_with_crack(), o);
+    o.crowd_limit = 1;
+    const ExplorationResult on = run_exploration(room_with_crack(), o);
+    EXPECT_EQ(off.crowd_skips, 0) << seed;
+    EXPECT_GE(on.crowd_skips, 1) << seed;
+    // Off, up to three of the four robots stood at the crack at once (seeds 1 and 4: 3; seed 6:
+    // 2). With a limit of 1 a robot keeps away while another is there or heading there, unless
+    // it is within 2 m itself: at most two at once (seed 1: 1; seeds 4 and 6: 2).
+    const int most_off = most_at_crack(off), most_on = most_at_crack(on);
+    EXPECT_LE(most_on, o.crowd_limit + 1) << seed;
+    EXPECT_LE(most_on, most_off) << seed;
+    if (most_off > o.crowd_limit + 1) {
+      EXPECT_LT(most_on, most_off) << seed;
+    }
+    // The rest of the exploration is the same.
     EXPECT_NEAR(on.coverage, off.coverage, 1e-9) << seed;
     EXPECT_EQ(on.stalled_robots, 0) << seed;
     EXPECT_EQ(on.collisions, 0) << seed;
