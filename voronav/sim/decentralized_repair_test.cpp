@@ -330,5 +330,29 @@ TEST(DecentralizedRepair, AnUnansweredRepairIsSentAgainFarther) {
   EXPECT_LT(both.source_travel_m, ring.source_travel_m);
 }
 
+// repair_fix_seen_only (issue #13, stop 22): scenario 2, run 7 (data/netsim/s2_run7_fix_seen.yaml).
+// With repair_fix_answer the source repairs a refused answer by A* on its own map; with
+// repair_fix_seen_only that A* first keeps to cells the source knows free and the answer's free
+// discs, and here it finds such a walk (without the option the walk may cross unknown cells).
+TEST(DecentralizedRepair, ARepairedAnswerKeepsToSpaceSeenFree) {
+  auto f =
+      load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/s2_run7_fix_seen.yaml");
+  f.options.method = Method::kDecentralized;
+  f.options.repair_fix_answer = true;
+  f.options.repair_fix_seen_only = false;
+  const auto any = run_netsim(f.scenario, f.options).metrics;
+  ASSERT_TRUE(any.success);
+  EXPECT_GE(any.repair_answers_fixed_walk, 1) << "a refused answer repaired by A*";
+  EXPECT_EQ(any.repair_answers_fixed_seen, 0);
+
+  NetSimOptions o = f.options;
+  o.repair_fix_seen_only = true;
+  const auto seen = run_netsim(f.scenario, o).metrics;
+  ASSERT_TRUE(seen.success);
+  EXPECT_GE(seen.repair_answers_fixed_seen, 1) << "the walk kept to space seen free";
+  EXPECT_LE(seen.repair_answers_fixed_seen, seen.repair_answers_fixed_walk);
+  EXPECT_GE(seen.repairs_executed, 1);
+}
+
 }  // namespace
 }  // namespace voronav::sim
