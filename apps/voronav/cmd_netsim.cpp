@@ -468,15 +468,6 @@ void run(const NetsimArgs& a) {
                          {"repair_requests", r.repair_requests},
                          {"source_repair_requests", r.source_repair_requests},
                          {"repair_answers", r.repair_answers},
-                         {"repair_answers_received", r.repair_answers_received},
-                         {"repair_answers_refused", r.repair_answers_refused},
-                         {"repair_reasks", r.repair_reasks},
-                         {"repair_cells_max", r.repair_cells_max},
-                         {"repairs_own", r.repairs_own},
-                         {"repair_answers_fixed", r.repair_answers_fixed},
-                         {"repair_answers_fixed_walk", r.repair_answers_fixed_walk},
-                         {"repair_rings_expanded", r.repair_rings_expanded},
-                         {"repair_answers_fixed_seen", r.repair_answers_fixed_seen},
                          {"changes", sc.changes.size()},
                          {"changes_applied", r.changes_applied},
                          {"changes_on_route", r.changes_on_route},
@@ -495,6 +486,8 @@ void run(const NetsimArgs& a) {
                          {"source_start", pose_json({sc.robots[sc.source], 0.0})},
                          {"destination", pose_json({sc.destination, 0.0})},
                          {"robots", robots_json(r)}});
+      sim::SourceRepairTrace::fields(
+          [&](const char* name, auto member) { per_run.back()[name] = r.*member; });
       per_run.back().update(extra);
     }
     out[std::string(sim::to_string(m))] = summary_json(sim::summarize(all));

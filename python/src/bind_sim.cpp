@@ -56,6 +56,18 @@ py::dict metrics_dict(const sm::NetSimMetrics& m) {
   d["repairs"] = m.repairs;
   d["replans"] = m.replans;
   d["corrupt_packets"] = m.corrupt_packets;
+  // Which mechanism produced the result (docs/reproductions/networked.md): who built the route,
+  // the Repairs executed and where they came from, the obstacle changes met.
+  d["route_found_by"] = std::string(sm::to_string(m.route_found_by));
+  d["route_robots"] = m.route_robots;
+  d["paths_lost"] = m.paths_lost;
+  d["repairs_executed"] = m.repairs_executed;
+  d["repair_requests"] = m.repair_requests;
+  d["source_repair_requests"] = m.source_repair_requests;
+  d["repair_answers"] = m.repair_answers;
+  sm::SourceRepairTrace::fields([&](const char* name, auto member) { d[name] = m.*member; });
+  d["changes_applied"] = m.changes_applied;
+  d["changes_on_route"] = m.changes_on_route;
   d["simulated_s"] = m.simulated_s;
   d["wall_s"] = m.wall_s;
   d["robots"] = robots;

@@ -51,8 +51,12 @@ def test_netsim_run_metrics_dict():
     assert res["success"] is True
     assert len(res["robots"]) == 3 and {"work", "travel_m", "sent_bytes"} <= set(res["robots"][0])
     assert res["traffic_bytes"] == sum(r["sent_bytes"] for r in res["robots"])
+    # Which mechanism produced the route: the robot at 4 m relays the Search (3 m sensing).
+    assert res["route_found_by"] == "relays" and res["route_robots"] == 1
+    assert res["repairs_executed"] == 0 and res["changes_applied"] == 0
+    assert res["repair_rings_expanded"] == 0 and "repair_answers_fixed_seen" in res
     cen = vn.netsim.run(sc, vn.netsim.Options(method="centralized"), time_limit_s=60.0, record=True)
-    assert cen["success"] is True
+    assert cen["success"] is True and cen["route_found_by"] == "source_alone"
     route = cen["route"]
     assert len(route) >= 2 and route[-1] == pytest.approx((9.0, 3.0), abs=0.2)
     assert len(cen["steps"]) > 1 and len(cen["steps"][0]["positions"]) == 3

@@ -51,55 +51,47 @@ std::string metrics_to_json(const sim::NetSimMetrics& m) {
   json robots = json::array();
   for (const auto& r : m.robots)
     robots.push_back(robot_metrics_json(r));
-  const json j = {{"success", m.success},
-                  {"route_time_s", m.route_time_s},
-                  {"arrival_time_s", m.arrival_time_s},
-                  {"travel_m", m.travel_m},
-                  {"source_travel_m", m.source_travel_m},
-                  {"route_length_m", m.route_length_m},
-                  {"traffic_bytes", m.traffic_bytes},
-                  {"messages", m.messages},
-                  {"computation", m.computation},
-                  {"max_robot_computation", m.max_robot_computation},
-                  {"cpu_s", m.cpu_s},
-                  {"max_robot_cpu_s", m.max_robot_cpu_s},
-                  {"by_type", by_type},
-                  {"alpha_bytes", m.alpha_bytes},
-                  {"beta_bytes", m.beta_bytes},
-                  {"gamma_bytes", m.gamma_bytes},
-                  {"search_attempts", m.search_attempts},
-                  {"repairs", m.repairs},
-                  {"replans", m.replans},
-                  {"corrupt_packets", m.corrupt_packets},
-                  {"route_found_by", std::string(sim::to_string(m.route_found_by))},
-                  {"route_robots", m.route_robots},
-                  {"paths_lost", m.paths_lost},
-                  {"paths_unacknowledged", m.paths_unacknowledged},
-                  {"paths_late", m.paths_late},
-                  {"repairs_executed", m.repairs_executed},
-                  {"repair_requests", m.repair_requests},
-                  {"source_repair_requests", m.source_repair_requests},
-                  {"repair_answers", m.repair_answers},
-                  {"repair_answers_received", m.repair_answers_received},
-                  {"repair_answers_refused", m.repair_answers_refused},
-                  {"repair_reasks", m.repair_reasks},
-                  {"repair_cells_max", m.repair_cells_max},
-                  {"repairs_own", m.repairs_own},
-                  {"repair_answers_fixed", m.repair_answers_fixed},
-                  {"repair_answers_fixed_walk", m.repair_answers_fixed_walk},
-                  {"repair_rings_expanded", m.repair_rings_expanded},
-                  {"repair_answers_fixed_seen", m.repair_answers_fixed_seen},
-                  {"changes_on_route", m.changes_on_route},
-                  {"changes_applied", m.changes_applied},
-                  {"point_searches", m.point_searches},
-                  {"search_copies_ignored", m.search_copies_ignored},
-                  {"sensing_walks", m.sensing_walks},
-                  {"sensing_walk_m", m.sensing_walk_m},
-                  {"route_used_sensing", m.route_used_sensing},
-                  {"relay_travel_m", m.relay_travel_m},
-                  {"simulated_s", m.simulated_s},
-                  {"wall_s", m.wall_s},
-                  {"robots", robots}};
+  json j = {{"success", m.success},
+            {"route_time_s", m.route_time_s},
+            {"arrival_time_s", m.arrival_time_s},
+            {"travel_m", m.travel_m},
+            {"source_travel_m", m.source_travel_m},
+            {"route_length_m", m.route_length_m},
+            {"traffic_bytes", m.traffic_bytes},
+            {"messages", m.messages},
+            {"computation", m.computation},
+            {"max_robot_computation", m.max_robot_computation},
+            {"cpu_s", m.cpu_s},
+            {"max_robot_cpu_s", m.max_robot_cpu_s},
+            {"by_type", by_type},
+            {"alpha_bytes", m.alpha_bytes},
+            {"beta_bytes", m.beta_bytes},
+            {"gamma_bytes", m.gamma_bytes},
+            {"search_attempts", m.search_attempts},
+            {"repairs", m.repairs},
+            {"replans", m.replans},
+            {"corrupt_packets", m.corrupt_packets},
+            {"route_found_by", std::string(sim::to_string(m.route_found_by))},
+            {"route_robots", m.route_robots},
+            {"paths_lost", m.paths_lost},
+            {"paths_unacknowledged", m.paths_unacknowledged},
+            {"paths_late", m.paths_late},
+            {"repairs_executed", m.repairs_executed},
+            {"repair_requests", m.repair_requests},
+            {"source_repair_requests", m.source_repair_requests},
+            {"repair_answers", m.repair_answers},
+            {"changes_on_route", m.changes_on_route},
+            {"changes_applied", m.changes_applied},
+            {"point_searches", m.point_searches},
+            {"search_copies_ignored", m.search_copies_ignored},
+            {"sensing_walks", m.sensing_walks},
+            {"sensing_walk_m", m.sensing_walk_m},
+            {"route_used_sensing", m.route_used_sensing},
+            {"relay_travel_m", m.relay_travel_m},
+            {"simulated_s", m.simulated_s},
+            {"wall_s", m.wall_s},
+            {"robots", robots}};
+  put_repair_trace(j, m);
   return j.dump();
 }
 
@@ -137,15 +129,7 @@ sim::NetSimMetrics metrics_from_json(const std::string& text) {
     m.repair_requests = j.value("repair_requests", 0);
     m.source_repair_requests = j.value("source_repair_requests", 0);
     m.repair_answers = j.value("repair_answers", 0);
-    m.repair_answers_received = j.value("repair_answers_received", 0);
-    m.repair_answers_refused = j.value("repair_answers_refused", 0);
-    m.repair_reasks = j.value("repair_reasks", 0);
-    m.repair_cells_max = j.value("repair_cells_max", 0);
-    m.repairs_own = j.value("repairs_own", 0);
-    m.repair_answers_fixed = j.value("repair_answers_fixed", 0);
-    m.repair_answers_fixed_walk = j.value("repair_answers_fixed_walk", 0);
-    m.repair_rings_expanded = j.value("repair_rings_expanded", 0);
-    m.repair_answers_fixed_seen = j.value("repair_answers_fixed_seen", 0);
+    get_repair_trace(j, m);
     m.changes_on_route = j.at("changes_on_route").get<int>();
     m.changes_applied = j.at("changes_applied").get<int>();
     m.point_searches = j.value("point_searches", std::uint64_t{0});

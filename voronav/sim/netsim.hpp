@@ -30,6 +30,7 @@
 #include "voronav/network/messages.hpp"
 #include "voronav/network/sim_radio.hpp"
 #include "voronav/network/voronoi_points.hpp"
+#include "voronav/sim/source_repair_trace.hpp"
 
 namespace voronav::sim {
 
@@ -257,7 +258,8 @@ struct RobotMetrics {
   std::array<network::TrafficCounter, network::kMessageTypeCount> sent_by_type{};
 };
 
-struct NetSimMetrics {
+/// The source's Repair counters (SourceRepairTrace) are those of its AgentReport.
+struct NetSimMetrics : SourceRepairTrace {
   bool success = false;
   double route_time_s = -1.0;    ///< first time the source has a route (-1 never)
   double arrival_time_s = -1.0;  ///< when the source reached the destination (-1 never)
@@ -288,20 +290,9 @@ struct NetSimMetrics {
   int paths_late = 0;  ///< Paths of an earlier Search the source received (delivered, not lost)
   int repairs_executed = 0;  ///< local Repairs (Tables 4–5) that produced a detour
   /// Repair traffic (robot_agent.hpp AgentReport): Repair messages started by all robots and by
-  /// the source, detours sent back, and repaired routes that reached the source / it refused.
+  /// the source, and detours sent back. The source's executed Repairs that are not counted in
+  /// repairs_own / repair_answers_fixed* are answers or relay detours it took as they were.
   int repair_requests = 0, source_repair_requests = 0, repair_answers = 0;
-  int repair_answers_received = 0, repair_answers_refused = 0;
-  /// repair_share_met_blocks: Repairs the source sent again with cells learned from a refused
-  /// answer, and the most cells one of its Repairs carried.
-  int repair_reasks = 0, repair_cells_max = 0;
-  /// Where the source's executed Repairs came from: its own detour (Table 5), and, with
-  /// repair_fix_answer, a refused answer it repaired by its own points / by A* on its own map
-  /// (the rest of repairs_executed are answers or relay detours it took as they were).
-  int repairs_own = 0, repair_answers_fixed = 0, repair_answers_fixed_walk = 0;
-  /// repair_expand_hops: new Repairs the source sent with a larger hop limit after none came back.
-  int repair_rings_expanded = 0;
-  /// repair_fix_seen_only: of repair_answers_fixed_walk, the walks kept to space seen free.
-  int repair_answers_fixed_seen = 0;
   int changes_on_route = 0;  ///< obstacle changes that touched the source's route ahead
   int changes_applied = 0;   ///< obstacle changes that happened during the run
   /// Decentralized: point searches run by all robots, and copies of an already forwarded Search

@@ -96,15 +96,7 @@ NetSimMetrics aggregate_metrics(const std::vector<AgentReport>& robots, std::siz
     M.route_robots = s.route_robots;
     M.changes_on_route = s.changes_on_route;
     M.source_repair_requests = s.repair_requests;
-    M.repair_answers_received = s.repair_answers_received;
-    M.repair_answers_refused = s.repair_answers_refused;
-    M.repair_reasks = s.repair_reasks;
-    M.repair_cells_max = s.repair_cells_max;
-    M.repairs_own = s.repairs_own;
-    M.repair_answers_fixed = s.repair_answers_fixed;
-    M.repair_answers_fixed_walk = s.repair_answers_fixed_walk;
-    M.repair_rings_expanded = s.repair_rings_expanded;
-    M.repair_answers_fixed_seen = s.repair_answers_fixed_seen;
+    static_cast<SourceRepairTrace&>(M) = s;
   }
   return M;
 }

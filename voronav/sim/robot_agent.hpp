@@ -31,6 +31,7 @@
 #include "voronav/sim/disc_sweep.hpp"
 #include "voronav/sim/netsim.hpp"
 #include "voronav/sim/segment_cache.hpp"
+#include "voronav/sim/source_repair_trace.hpp"
 #include "voronav/sim/world.hpp"
 
 namespace voronav::sim {
@@ -49,7 +50,7 @@ struct AgentContext {
 
 /// One robot's share of the run metrics (NetSimMetrics is the sum over robots, see
 /// aggregate_metrics()).
-struct AgentReport {
+struct AgentReport : SourceRepairTrace {
   RobotMetrics metrics;  ///< work, CPU, travel, bytes and messages sent (also by type)
   int search_attempts = 0;
   int repairs = 0;
@@ -72,19 +73,9 @@ struct AgentReport {
   int paths_late = 0;
   int repairs_executed = 0;  ///< local Repairs (Tables 4–5) that produced a detour
   /// Repair traffic, traced (issue #13): Repair messages this robot started (Tables 4–5 line 1,
-  /// not the re-sends), detours it sent back (an answer, or a relay's own detour), and (source)
-  /// the repaired routes that reached it and those it refused as blocked in its own map.
+  /// not the re-sends) and detours it sent back (an answer, or a relay's own detour); the
+  /// source's own Repair counters are those of SourceRepairTrace.
   int repair_requests = 0, repair_answers = 0;
-  int repair_answers_received = 0, repair_answers_refused = 0;
-  /// (source, repair_share_met_blocks) Repairs sent again with cells learned from a refused
-  /// answer, and the most cells one of its Repairs carried.
-  int repair_reasks = 0, repair_cells_max = 0;
-  /// (source) its own detours, and refused answers it repaired (repair_fix_answer).
-  int repairs_own = 0, repair_answers_fixed = 0, repair_answers_fixed_walk = 0;
-  /// (source, repair_expand_hops) Repairs sent again with a larger hop limit after no answer.
-  int repair_rings_expanded = 0;
-  /// (source, repair_fix_seen_only) A* repairs of refused answers kept to space seen free.
-  int repair_answers_fixed_seen = 0;
   int changes_on_route = 0;  ///< (source) obstacle changes that touched its route ahead
   int point_searches = 0;    ///< decentralized point searches run (try_continue)
   /// Copies of an already forwarded Search ignored as not new (Table 2 line 4).

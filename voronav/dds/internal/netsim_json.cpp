@@ -27,39 +27,42 @@ sim::RobotMetrics robot_metrics_from(const json& j) {
   return m;
 }
 
+void put_repair_trace(json& j, const sim::SourceRepairTrace& t) {
+  sim::SourceRepairTrace::fields([&](const char* name, auto member) { j[name] = t.*member; });
+}
+
+void get_repair_trace(const json& j, sim::SourceRepairTrace& t) {
+  sim::SourceRepairTrace::fields([&](const char* name, auto member) {
+    t.*member = j.value(name, 0);  // absent in files written before the counter existed
+  });
+}
+
 json agent_report_json(const sim::AgentReport& a) {
-  return {{"metrics", robot_metrics_json(a.metrics)},
-          {"search_attempts", a.search_attempts},
-          {"repairs", a.repairs},
-          {"replans", a.replans},
-          {"corrupt_packets", a.corrupt_packets},
-          {"arrived", a.arrived},
-          {"route_time_s", a.route_time_s},
-          {"arrival_time_s", a.arrival_time_s},
-          {"route_length_m", a.route_length_m},
-          {"found_by", std::string(sim::to_string(a.found_by))},
-          {"route_robots", a.route_robots},
-          {"paths_lost", a.paths_lost},
-          {"paths_unacknowledged", a.paths_unacknowledged},
-          {"paths_late", a.paths_late},
-          {"repairs_executed", a.repairs_executed},
-          {"repair_requests", a.repair_requests},
-          {"repair_answers", a.repair_answers},
-          {"repair_answers_received", a.repair_answers_received},
-          {"repair_answers_refused", a.repair_answers_refused},
-          {"repair_reasks", a.repair_reasks},
-          {"repair_cells_max", a.repair_cells_max},
-          {"repairs_own", a.repairs_own},
-          {"repair_answers_fixed", a.repair_answers_fixed},
-          {"repair_answers_fixed_walk", a.repair_answers_fixed_walk},
-          {"repair_rings_expanded", a.repair_rings_expanded},
-          {"repair_answers_fixed_seen", a.repair_answers_fixed_seen},
-          {"changes_on_route", a.changes_on_route},
-          {"point_searches", a.point_searches},
-          {"search_copies_ignored", a.search_copies_ignored},
-          {"sensing_walks", a.sensing_walks},
-          {"sensing_walk_m", a.sensing_walk_m},
-          {"route_used_sensing", a.route_used_sensing}};
+  json j = {{"metrics", robot_metrics_json(a.metrics)},
+            {"search_attempts", a.search_attempts},
+            {"repairs", a.repairs},
+            {"replans", a.replans},
+            {"corrupt_packets", a.corrupt_packets},
+            {"arrived", a.arrived},
+            {"route_time_s", a.route_time_s},
+            {"arrival_time_s", a.arrival_time_s},
+            {"route_length_m", a.route_length_m},
+            {"found_by", std::string(sim::to_string(a.found_by))},
+            {"route_robots", a.route_robots},
+            {"paths_lost", a.paths_lost},
+            {"paths_unacknowledged", a.paths_unacknowledged},
+            {"paths_late", a.paths_late},
+            {"repairs_executed", a.repairs_executed},
+            {"repair_requests", a.repair_requests},
+            {"repair_answers", a.repair_answers},
+            {"changes_on_route", a.changes_on_route},
+            {"point_searches", a.point_searches},
+            {"search_copies_ignored", a.search_copies_ignored},
+            {"sensing_walks", a.sensing_walks},
+            {"sensing_walk_m", a.sensing_walk_m},
+            {"route_used_sensing", a.route_used_sensing}};
+  put_repair_trace(j, a);
+  return j;
 }
 sim::AgentReport agent_report_from(const json& j) {
   sim::AgentReport a;
@@ -80,15 +83,7 @@ sim::AgentReport agent_report_from(const json& j) {
   a.repairs_executed = j.at("repairs_executed").get<int>();
   a.repair_requests = j.value("repair_requests", 0);
   a.repair_answers = j.value("repair_answers", 0);
-  a.repair_answers_received = j.value("repair_answers_received", 0);
-  a.repair_answers_refused = j.value("repair_answers_refused", 0);
-  a.repair_reasks = j.value("repair_reasks", 0);
-  a.repair_cells_max = j.value("repair_cells_max", 0);
-  a.repairs_own = j.value("repairs_own", 0);
-  a.repair_answers_fixed = j.value("repair_answers_fixed", 0);
-  a.repair_answers_fixed_walk = j.value("repair_answers_fixed_walk", 0);
-  a.repair_rings_expanded = j.value("repair_rings_expanded", 0);
-  a.repair_answers_fixed_seen = j.value("repair_answers_fixed_seen", 0);
+  get_repair_trace(j, a);
   a.changes_on_route = j.at("changes_on_route").get<int>();
   a.point_searches = j.value("point_searches", 0);
   a.search_copies_ignored = j.value("search_copies_ignored", 0);
