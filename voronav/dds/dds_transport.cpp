@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "voronav/core/error.hpp"
+#include "voronav/dds/internal/wire_qos.hpp"
 #include "voronav_dds.h"
 
 namespace voronav::dds {
@@ -194,6 +195,7 @@ struct Endpoints {
     dds_qset_history(q, DDS_HISTORY_KEEP_LAST, o.history_depth);
     dds_qset_durability(q, DDS_DURABILITY_VOLATILE);
     dds_qset_ignorelocal(q, DDS_IGNORELOCAL_PARTICIPANT);
+    internal::allow_xcdr1_only(q);
     return q;
   }
   static dds_qos_t* pose_qos() {
@@ -202,6 +204,7 @@ struct Endpoints {
     dds_qset_history(q, DDS_HISTORY_KEEP_LAST, 1);
     dds_qset_durability(q, DDS_DURABILITY_TRANSIENT_LOCAL);
     dds_qset_ignorelocal(q, DDS_IGNORELOCAL_PARTICIPANT);
+    internal::allow_xcdr1_only(q);
     return q;
   }
 };

@@ -2,6 +2,7 @@
 // domain (each test on its own domain id and partition, so parallel test processes never mix).
 #include "voronav/dds/dds_transport.hpp"
 
+#include <dds/dds.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -9,9 +10,11 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <thread>
 
 #include "voronav/core/error.hpp"
 #include "voronav/dds/cyclone_config.hpp"
+#include "voronav_dds.h"
 
 namespace voronav::dds {
 namespace {
@@ -105,6 +108,40 @@ TEST(CycloneConfig, WrittenFileRoundTrips) {
   std::fclose(f);
   EXPECT_EQ(content, loopback_config_xml());
   EXPECT_EQ(cyclone_uri_for(path).rfind("file:///", 0), 0u);
+}
+
+// A writer that offers only XCDR2 never matches a voronav reader (internal/wire_qos.hpp: Debian's
+// Cyclone 0.10.2 XCDR2 normalizer overruns a sample that ends inside an 8-byte member), and one
+// that offers XCDR1 does, so the check is the data representation and not something else.
+TEST(DdsTransport, ReadersMatchOnlyXcdr1Writers) {
+  auto o = base_options(1);
+  DdsTransport t(o);  // creates the domain with the loopback configuration
+  const dds_entity_t participant = dds_create_participant(o.domain_id, nullptr, nullptr);
+  ASSERT_GT(participant, 0);
+  const dds_entity_t topic =
+      dds_create_topic(participant, &voronav_dds_Payload_desc, "voronav_payload", nullptr, nullptr);
+  ASSERT_GT(topic, 0);
+  auto matched_writers = [&](dds_data_representation_id_t representation) {
+    dds_qos_t* q = dds_create_qos();
+    dds_qset_partition1(q, o.partition.c_str());
+    dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
+    dds_qset_data_representation(q, 1, &representation);
+    const dds_entity_t w = dds_create_writer(participant, topic, q, nullptr);
+    dds_delete_qos(q);
+    EXPECT_GT(w, 0);
+    dds_publication_matched_status_t st{};
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+    while (std::chrono::steady_clock::now() < deadline) {
+      EXPECT_EQ(dds_get_publication_matched_status(w, &st), DDS_RETCODE_OK);
+      if (st.current_count > 0) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    dds_delete(w);
+    return st.current_count;
+  };
+  EXPECT_EQ(matched_writers(DDS_DATA_REPRESENTATION_XCDR2), 0u);
+  EXPECT_EQ(matched_writers(DDS_DATA_REPRESENTATION_XCDR1), 1u) << "the transport's payload reader";
+  dds_delete(participant);
 }
 
 TEST(DdsTransport, BadOptionsThrow) {

@@ -10,6 +10,7 @@
 #include <cstdlib>
 
 #include "voronav/core/error.hpp"
+#include "voronav/dds/internal/wire_qos.hpp"
 #include "voronav_dds.h"
 
 namespace voronav::dds::internal {
@@ -32,6 +33,7 @@ dds_qos_t* control_qos() {
   dds_qset_history(q, DDS_HISTORY_KEEP_LAST, 1);
   dds_qset_durability(q, DDS_DURABILITY_TRANSIENT_LOCAL);
   dds_qset_ignorelocal(q, DDS_IGNORELOCAL_PARTICIPANT);
+  allow_xcdr1_only(q);
   return q;
 }
 
