@@ -103,6 +103,12 @@ struct TopologyOptions {
   /// Where a wall-line opening and a narrowing's critical line close the same opening, keep the
   /// wall line (true) or the narrowing's line (false).
   bool wall_openings_first = false;
+  /// A critical point whose two nearest sites lie on one wall (the neighbourhood's farthest site
+  /// closer to the first than 1.5 x the clearance, at a corner or a corridor's mouth) gets as its
+  /// second basis point the obstacle across it, on the ray from the first through the point, so
+  /// that its line crosses the narrowing; none when no obstacle lies within 1.5 x the clearance
+  /// (issue #15, beyond the paper).
+  bool basis_across = false;
 };
 
 struct CriticalPoint {
@@ -143,6 +149,7 @@ struct TopologicalMap {
   std::vector<Region> regions;
   std::vector<TopoEdge> edges;
   std::size_t absorbed_obstacles = 0;  ///< obstacle pieces joined to a region
+  std::size_t basis_across = 0;        ///< critical points given a basis point across them
 
   /// The region of a free cell, -1 for blocked (also absorbed) or outside cells.
   [[nodiscard]] int region_of(Cell c) const {
