@@ -20,7 +20,9 @@
 //    whose clearance reaches that rise (two pieces of one passage). Openings in wall lines (issue
 //    #15, on by default; wall_openings.hpp): a door-width gap between two collinear wall faces, or
 //    between a wall stub's end and the wall ahead of it, is a critical line too
-//    (CriticalPoint::wall_gap), unless a narrowing's line is next to it.
+//    (CriticalPoint::wall_gap), unless a narrowing's line is next to it. basis_across (off): a
+//    point whose two sites lie on one wall (a notch's jambs at a corridor's mouth) takes the
+//    obstacle across it as its second basis point, so that its line crosses the narrowing.
 //  - critical line: the Bresenham segment between the two basis points.
 //  - regions: the free cells cut by the critical lines, 4-connected components; the cells of the
 //    lines join the smallest adjacent region. Merge rule: a region smaller than min_region_area
