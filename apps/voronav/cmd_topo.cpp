@@ -39,6 +39,7 @@ struct TopoArgs {
   double min_wall_area = topology::TopologyOptions{}.min_wall_area;
   topology::WallOpeningOptions wall = topology::TopologyOptions{}.wall_openings;
   bool wall_first = topology::TopologyOptions{}.wall_openings_first;
+  bool basis_across = topology::TopologyOptions{}.basis_across;
   bool json = false;
   std::filesystem::path mcap;
 };
@@ -71,6 +72,7 @@ void run(const TopoArgs& a) {
   opt.min_wall_area = a.min_wall_area;
   opt.wall_openings = a.wall;
   opt.wall_openings_first = a.wall_first;
+  opt.basis_across = a.basis_across;
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
   const topology::TopologicalMap m = topology::build_topological_map(blocked, opt);
@@ -108,6 +110,7 @@ void run(const TopoArgs& a) {
   j["critical_points"] = cps;
   j["regions"] = m.regions.size();
   j["absorbed_obstacles"] = m.absorbed_obstacles;
+  j["basis_across"] = m.basis_across;
   nlohmann::json nodes = nlohmann::json::array(), edges = nlohmann::json::array();
   const auto outlines = topology::region_outlines(m.region, static_cast<int>(m.regions.size()));
   for (const auto& r : m.regions) {
@@ -280,6 +283,11 @@ void setup(CLI::App& app) {
   cmd->add_option("--wall-gap-first", args->wall_first,
                   "Where a wall-line opening and a narrowing close the same opening, keep the "
                   "wall line (true/false)")
+      ->capture_default_str();
+  cmd->add_option("--basis-across", args->basis_across,
+                  "Critical points whose two nearest sites lie on one wall (a corner, a corridor's "
+                  "mouth) take the obstacle across the point as second basis point, so the line "
+                  "crosses the narrowing (true/false)")
       ->capture_default_str();
   cmd->add_option("--mcap", args->mcap,
                   "Write a ROS 2 bag (MCAP): /map, /voronoi, /topology (docs/ros.md)");

@@ -269,7 +269,8 @@ void bind_field(py::module_& m) {
                      "[m^2], 0 = off; enclosed obstacle pieces up to this join their region")
       .def_readwrite("wall_openings", &topology::TopologyOptions::wall_openings,
                      "openings in wall lines closed by critical lines")
-      .def_readwrite("wall_openings_first", &topology::TopologyOptions::wall_openings_first);
+      .def_readwrite("wall_openings_first", &topology::TopologyOptions::wall_openings_first)
+      .def_readwrite("basis_across", &topology::TopologyOptions::basis_across);
   py::class_<topology::CriticalPoint>(tp, "CriticalPoint")
       .def_property_readonly("cell",
                              [](const topology::CriticalPoint& c) { return cell_tuple(c.cell); })

@@ -51,6 +51,8 @@ def test_critical_line_options_equal_cli(data, cli):
     assert len(classic.critical_points) != len(topo.critical_points)
     assert vn.topology.TopologyOptions().passage_bulges  # on by default, settable
     assert not vn.topology.TopologyOptions(passage_bulges=False).passage_bulges
+    assert not vn.topology.TopologyOptions().basis_across  # off by default, settable
+    assert vn.topology.TopologyOptions(basis_across=True).basis_across
 
 
 def test_wall_openings_equal_cli(data, cli):

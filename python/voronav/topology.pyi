@@ -38,6 +38,7 @@ class TopologyOptions:
     regions_absorb_obstacles: float  # [m^2], 0 = off
     wall_openings: WallOpeningOptions
     wall_openings_first: bool
+    basis_across: bool  # second basis point across the point (off)
     def __init__(self, **kwargs: object) -> None: ...
 
 class CriticalPoint:

@@ -297,8 +297,8 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
                           const TopologyOptions& o) {
   const GridGeometry& geo = g.geometry;
   const double res = geo.resolution;
-  TopologicalMap out{geo, g.blocked, diagram, g.clearance, {}, GridMap<std::int32_t>(geo, -1),
-                     {},  {},        0};
+  TopologicalMap out{geo, g.blocked, diagram, g.clearance, {}, GridMap<std::int32_t>(geo, -1), {},
+                     {},  0,         0};
   if (geo.empty()) return out;
 
   // 1. Critical points along the Voronoi graph's edges.
@@ -373,6 +373,25 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
         if (t == voronoi::kNoSiteCell) continue;
         if (sq(t, s1) > sq(s2, s1)) s2 = t;
       }
+    if (o.basis_across && sq(s1, s2) < 2.25 * clear * clear) {
+      // Both sites on one wall (at a corner or a mouth): the line would not cross the
+      // narrowing. The second basis point is the obstacle across it, where the ray from s1
+      // through the critical point meets one within 1.5 x the clearance (a narrowing's other
+      // side lies about the clearance away; farther, the point is no narrowing across).
+      const double dx = p.x - s1.x, dy = p.y - s1.y;
+      const double len = std::hypot(dx, dy);
+      if (len > 0.0)
+        for (double t = 1.0; t <= 1.5 * clear; t += 0.5) {
+          const Cell q{static_cast<int>(std::lround(p.x + t * dx / len)),
+                       static_cast<int>(std::lround(p.y + t * dy / len))};
+          if (!geo.contains(q)) break;
+          if (g.blocked[q]) {
+            s2 = q;
+            ++out.basis_across;
+            break;
+          }
+        }
+    }
     if (sq(s1, s2) < 4.0) continue;  // not two separate obstacles
     if (on_furniture(s1) || on_furniture(s2)) continue;
     CriticalPoint cp;

@@ -20,7 +20,9 @@
 //    whose clearance reaches that rise (two pieces of one passage). Openings in wall lines (issue
 //    #15, on by default; wall_openings.hpp): a door-width gap between two collinear wall faces, or
 //    between a wall stub's end and the wall ahead of it, is a critical line too
-//    (CriticalPoint::wall_gap), unless a narrowing's line is next to it.
+//    (CriticalPoint::wall_gap), unless a narrowing's line is next to it. basis_across (off): a
+//    point whose two sites lie on one wall (a notch's jambs at a corridor's mouth) takes the
+//    obstacle across it as its second basis point, so that its line crosses the narrowing.
 //  - critical line: the Bresenham segment between the two basis points.
 //  - regions: the free cells cut by the critical lines, 4-connected components; the cells of the
 //    lines join the smallest adjacent region. Merge rule: a region smaller than min_region_area
@@ -103,6 +105,12 @@ struct TopologyOptions {
   /// Where a wall-line opening and a narrowing's critical line close the same opening, keep the
   /// wall line (true) or the narrowing's line (false).
   bool wall_openings_first = false;
+  /// A critical point whose two nearest sites lie on one wall (the neighbourhood's farthest site
+  /// closer to the first than 1.5 x the clearance, at a corner or a corridor's mouth) gets as its
+  /// second basis point the obstacle across it, on the ray from the first through the point, so
+  /// that its line crosses the narrowing; none when no obstacle lies within 1.5 x the clearance
+  /// (issue #15, beyond the paper).
+  bool basis_across = false;
 };
 
 struct CriticalPoint {
@@ -143,6 +151,7 @@ struct TopologicalMap {
   std::vector<Region> regions;
   std::vector<TopoEdge> edges;
   std::size_t absorbed_obstacles = 0;  ///< obstacle pieces joined to a region
+  std::size_t basis_across = 0;        ///< critical points given a basis point across them
 
   /// The region of a free cell, -1 for blocked (also absorbed) or outside cells.
   [[nodiscard]] int region_of(Cell c) const {

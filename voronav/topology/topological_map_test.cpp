@@ -495,5 +495,49 @@ TEST(TopologicalMap, NewCriticalPointOptionsAreChecked) {
   }
 }
 
+TEST(TopologicalMap, BasisAcrossGivesANotchedMouthALineThatCrossesIt) {
+  // Room A, a 32-cell-wide passage (1.6 m at 0.05 m) east to room B, and a 4-cell notch in the
+  // passage's south wall at A's mouth (issue #15, lab_ipa: a gap in a jagged wall where the link
+  // opens into the hall). The passage's mouth point lies above the notch: its nearest site and
+  // its neighbourhood's farthest site are the notch's two jambs, so the paper's line is 5 cells
+  // long on the south wall and cuts nothing; A and the passage stay one region. With
+  // basis_across the second basis point is the north wall across the point.
+  BinaryGrid g(GridGeometry{200, 120, 0.05, {}}, 1);
+  fill_rect(g, 1, 1, 70, 110, 0);     // room A
+  fill_rect(g, 71, 40, 150, 71, 0);   // passage, walls at y = 39 and y = 72
+  fill_rect(g, 151, 1, 198, 110, 0);  // room B
+  fill_rect(g, 73, 39, 76, 39, 0);    // the notch
+  TopologyOptions o;
+  o.basis_across = false;
+  const TopologicalMap off = build_topological_map(g, o);
+  EXPECT_EQ(off.basis_across, 0U);
+  EXPECT_EQ(off.region_of(Cell{30, 50}), off.region_of(Cell{110, 55}));  // A + passage
+  EXPECT_NE(off.region_of(Cell{110, 55}), off.region_of(Cell{175, 50}));
+  o.basis_across = true;
+  const TopologicalMap on = build_topological_map(g, o);
+  EXPECT_EQ(on.basis_across, 1U);
+  EXPECT_EQ(on.regions.size(), 3U);
+  const int a = on.region_of(Cell{30, 50}), p = on.region_of(Cell{110, 55}),
+            b = on.region_of(Cell{175, 50});
+  EXPECT_NE(a, p);
+  EXPECT_NE(p, b);
+  EXPECT_NE(a, b);
+  int across = 0;
+  for (const auto& cp : on.critical_points) {
+    if (cp.wall_gap || cp.cell.x > 100) continue;
+    ++across;
+    EXPECT_TRUE(cp.separates);
+    // From the notch's jamb on the south wall to the north wall, at the mouth.
+    EXPECT_EQ(cp.basis[0].y, 39);
+    EXPECT_EQ(cp.basis[1].y, 72) << cp.basis[1];
+    EXPECT_NEAR(cp.cell.x, 74, 3);
+  }
+  EXPECT_EQ(across, 1);
+  // Without the notch the paper's basis points already span the passage: nothing changes.
+  fill_rect(g, 73, 39, 76, 39, 1);
+  const TopologicalMap plain = build_topological_map(g, o);
+  EXPECT_EQ(plain.basis_across, 0U);
+}
+
 }  // namespace
 }  // namespace voronav::topology
