@@ -38,6 +38,7 @@ struct ExploreArgs {
   std::string share_bans = "off";
   int crowd_limit = 0;
   std::string drop_goalless_routes = "off";
+  std::string margin_escape = "off";
   std::string guard = "corridor";
   std::uint64_t seed = 1;
   std::string start;
@@ -129,6 +130,7 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                 {"share_bans", a.share_bans},
                 {"crowd_limit", a.crowd_limit},
                 {"drop_goalless_routes", a.drop_goalless_routes},
+                {"margin_escape", a.margin_escape},
                 {"guard", a.guard},
                 {"seed", a.seed},
                 {"stop_at_coverage", a.stop_at}};
@@ -173,6 +175,7 @@ void run(const ExploreArgs& a) {
   o.share_bans = a.share_bans == "on";
   o.crowd_limit = a.crowd_limit;
   o.drop_goalless_routes = a.drop_goalless_routes == "on";
+  o.margin_escape = a.margin_escape == "on";
   o.guard = exploration::parse_front_guard(a.guard);
   o.seed = a.seed;
   o.stop_at_coverage = a.stop_at;
@@ -303,6 +306,10 @@ void setup(CLI::App& app) {
   add_on_off(cmd, "--drop-goalless-routes", args->drop_goalless_routes,
              "frontier, coordinated, tree-frontier: a robot left without a goal stops "
              "following the route to its old goal (on, ours) or drives it on (off)");
+  add_on_off(cmd, "--margin-escape", args->margin_escape,
+             "every method: a robot on one spot for 20 s that stands nearer than body + "
+             "clearance to a known wall first drives straight out of that margin (on, ours) "
+             "or is given routes from where it stands (off)");
   cmd->add_option("--guard", args->guard,
                   "every method: the front guard of a robot on its route stops for anything "
                   "within 0.24 m in a +-40 deg fan (cone) or for a robot there and for a wall only "

@@ -383,6 +383,8 @@ void bind_sim(py::module_& m) {
                      "frontier: 0 = off (CLI --crowd-limit N)")
       .def_readwrite("drop_goalless_routes", &ex::ExplorationOptions::drop_goalless_routes,
                      "frontier methods (CLI --drop-goalless-routes on|off)")
+      .def_readwrite("margin_escape", &ex::ExplorationOptions::margin_escape,
+                     "every method (CLI --margin-escape on|off)")
       .def_readwrite("guard", &ex::ExplorationOptions::guard,
                      "every method: FrontGuard cone|corridor (CLI --guard)")
       .def_readwrite("controller", &ex::ExplorationOptions::controller,

@@ -64,6 +64,7 @@ struct Agent {
   Vec2 leg_replan_at;
   bool unsticking = false;     // following an unstick route (ExplorationOptions::unstick)
   bool guard_stopped = false;  // the front guard stopped it at its last route-following step
+  bool escaping = false;       // its unstick route leaves the planning margin (margin_escape)
 };
 
 OccupancyGrid team_grid(const mapping::OccupancyMap& m) {
@@ -430,6 +431,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     a.block.on_new_route();  // not progress: the block clock goes on (block_clock.hpp)
     a.since_progress = 0.0;
     a.unsticking = false;
+    a.escaping = false;
   };
 
   // --- tree dispatch (seed 004) ---
@@ -710,6 +712,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   // from where it is; else it searches reactively (and the frontier methods allocate again).
   const auto end_unstick = [&](Agent& a, double t) {
     a.unsticking = false;
+    a.escaping = false;
     a.route.clear();
     a.mode = AgentMode::kReactive;
     if (a.legs.empty()) return;
@@ -990,8 +993,10 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
         cmd = a.controller.update(robot::cast_scan(blocked, pose, o.laser, others, &rng), o.dt);
       } else if (a.mode == AgentMode::kFollow) {
         // Waypoint following: advance past reached waypoints, steer to the farthest visible one.
-        while (a.next < a.route.size() &&
-               distance(pose.position, a.route[a.next]) < o.goal_tolerance) {
+        // A margin escape ends on its exit cell (kCornerReach), not 0.3 m short of it, where the
+        // robot would still be in the margin.
+        const double tolerance = a.escaping ? internal::kCornerReach : o.goal_tolerance;
+        while (a.next < a.route.size() && distance(pose.position, a.route[a.next]) < tolerance) {
           // FrontGuard::kCorridor: no cutting a corner of the route where the body would not
           // clear the wall (internal/front_guard.hpp); drive on to the waypoint instead.
           if (o.guard == FrontGuard::kCorridor && a.next + 1 < a.route.size() &&
@@ -1137,7 +1142,23 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           a.unsticking = false;
         }
         a.reactive_until = t + 10.0;
-        if (o.method == ExplorationMethod::kTree ? o.unstick : o.frontier_unstick) {
+        // ExplorationOptions::margin_escape: inside the planning margin, out of it first.
+        std::optional<Vec2> exit_at;
+        if (o.margin_escape)
+          exit_at = margin_exit(traversable_of(team_grid(team), plan_radius), blocked, now, body,
+                                plan_radius);
+        if (exit_at) {
+          start_follow(a, {now, *exit_at});
+          a.block.on_fired();  // its own 3 s: the clock ran on the route that stopped it
+          a.unsticking = true;
+          a.escaping = true;
+          a.on_tree = false;
+          a.goal.reset();
+          a.goal_leaf = false;
+          a.reactive_until = 0.0;
+          ++result.margin_escapes;
+          log_event(t, a, "margin_escape");
+        } else if (o.method == ExplorationMethod::kTree ? o.unstick : o.frontier_unstick) {
           unstick(unstick, i, t, true);
         } else if (o.idle_unstick && !had_goal && o.method != ExplorationMethod::kTree) {
           // ExplorationOptions::idle_unstick: a goalless robot moves to open space.
@@ -1222,7 +1243,7 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"idle_unsticks\":" << r.idle_unsticks << ",\"yields\":" << r.yields
      << ",\"ban_resets\":" << r.ban_resets << ",\"shared_bans\":" << r.shared_bans
      << ",\"crowd_skips\":" << r.crowd_skips << ",\"route_drops\":" << r.route_drops
-     << ",\"guard_wall_stops\":" << r.guard_wall_stops
+     << ",\"margin_escapes\":" << r.margin_escapes << ",\"guard_wall_stops\":" << r.guard_wall_stops
      << ",\"guard_robot_stops\":" << r.guard_robot_stops
      << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;

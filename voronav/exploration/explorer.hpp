@@ -167,6 +167,16 @@ struct ExplorationOptions {
   /// coverage 97.69 % (off: 98.33 %) with two runs under 95 %, and coordinated seed 2 stalled a
   /// robot (off: 0), so off (stop 22).
   bool drop_goalless_routes = false;
+  /// Ours (issue 14, stop 23), every method: a robot that the progress watchdog finds on one spot
+  /// while its centre is inside the planning margin (nearer than the body radius + clearance to a
+  /// known obstacle of the team map) first drives straight to the nearest cell outside it that its
+  /// disc can reach without touching a wall (margin_exit, unstick.hpp), as an unstick route;
+  /// then it takes goals (or its tree legs) again, on routes the planner checked. Routes are
+  /// planned from the free cell nearest a robot and joined to its position, so from inside the
+  /// margin the first leg can clip a wall corner: traced on willow (16 robots, coordinated,
+  /// seed 5), a robot 0.14 m from a corner was given new routes from that spot for 600 s, every
+  /// one stopped by the front guard (stalled). `margin_escapes` counts them.
+  bool margin_escape = false;
   /// The front guard's rule (see FrontGuard); every method.
   FrontGuard guard = FrontGuard::kCorridor;
   double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
@@ -216,7 +226,8 @@ struct TreeDispatch {
 struct ExplorationEvent {
   double t = 0.0;  ///< [s]
   int robot = -1;
-  std::string kind;  ///< "leaf" (a tree leaf reached), "watchdog" (goal given up), "stalled"
+  std::string kind;  ///< "leaf" (a tree leaf reached), "watchdog" (goal given up), "stalled",
+                     ///< "unstick", "margin_escape" (ExplorationOptions::margin_escape)
 };
 
 struct ExplorationRecording {
@@ -267,7 +278,8 @@ struct ExplorationResult {
   int shared_bans = 0;
   /// (robot, frontier) pairs left out of the nearest-frontier choice as crowded (crowd_limit).
   int crowd_skips = 0;
-  int route_drops = 0;  ///< routes dropped by goalless robots (drop_goalless_routes)
+  int route_drops = 0;     ///< routes dropped by goalless robots (drop_goalless_routes)
+  int margin_escapes = 0;  ///< watchdog escapes out of the planning margin (margin_escape)
   /// Front guard stops (a robot that drove forward the step before and is stopped now): by a wall
   /// and by a robot (the right of way applies).
   int guard_wall_stops = 0;

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
+#include "voronav/exploration/internal/front_guard.hpp"
 #include "voronav/field/distance_transform.hpp"
 
 namespace voronav::exploration {
@@ -34,6 +37,32 @@ std::optional<Cell> unstick_target(const BinaryGrid& grid, const planning::BfsFl
     }
   }
   return best;
+}
+
+std::optional<Vec2> margin_exit(const BinaryGrid& grid, const BinaryGrid& world, Vec2 p,
+                                double body, double margin, double search) {
+  const GridGeometry& g = grid.geometry();
+  const auto c = g.world_to_cell(p);
+  if (!c) return std::nullopt;
+  // The runner ends the escape within kCornerReach of the exit: the exit keeps that much more.
+  const double need = margin + internal::kCornerReach, cap = need + 0.01;
+  if (grid[*c] == 0 && internal::wall_clearance(world, p, cap) >= margin) return std::nullopt;
+  const int r = static_cast<int>(std::ceil(search / g.resolution));
+  std::vector<std::pair<double, Cell>> free_cells;
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) {
+      const Cell n{c->x + dx, c->y + dy};
+      if (!grid.contains(n) || grid[n] != 0) continue;
+      const double d = distance(g.cell_center(n), p);
+      if (d <= search && internal::wall_clearance(world, g.cell_center(n), cap) >= need)
+        free_cells.emplace_back(d, n);
+    }
+  std::sort(free_cells.begin(), free_cells.end(), [&](const auto& a, const auto& b) {
+    return a.first < b.first || (a.first == b.first && grid.index(a.second) < grid.index(b.second));
+  });
+  for (const auto& [d, n] : free_cells)
+    if (internal::line_clear(world, p, g.cell_center(n), body)) return g.cell_center(n);
+  return std::nullopt;
 }
 
 }  // namespace voronav::exploration

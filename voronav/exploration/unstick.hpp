@@ -1,7 +1,9 @@
 // Stall recovery (ours, issue 14; not in seed 004): where a robot that has stayed on one spot
 // drives to. The runner calls it when its progress watchdog fires (ExplorationOptions::unstick):
 // the most open known-free place a short path away, reached around the other robots, so a robot
-// dithering in clutter or boxed in among robots gets out before it stalls.
+// dithering in clutter or boxed in among robots gets out before it stalls. margin_exit
+// (ExplorationOptions::margin_escape, stop 23): where a robot standing too near a wall for its
+// routes' first legs to clear it drives first.
 #pragma once
 
 #include <optional>
@@ -28,5 +30,24 @@ struct UnstickOptions {
                                                  const planning::BfsFlood& flood,
                                                  const field::DistanceField& clearance,
                                                  const UnstickOptions& options = {});
+
+/// ExplorationOptions::margin_escape (ours, issue 14, stop 23): where a robot that stands inside
+/// the planning margin (nearer than `margin` = body radius + clearance to a wall) drives first.
+/// `grid`: 0 = free for a robot centre (the team map's known obstacles inflated by the body radius
+/// + clearance, traversable_of); `world`: the walls the robot's disc must clear (its front
+/// guard's). When p's cell is free on `grid`, nullopt (not in the margin) when also the walls of
+/// `world` (what the robot's front guard senses) are at least `margin` [m] from p. Else the centre
+/// of the cell nearest to p within `search` [m] that is free on `grid`, at least `margin` +
+/// internal::kCornerReach from the walls of `world` (the runner ends the escape that near the exit,
+/// so the robot is out of the margin then), and reached by the straight line along which the disc
+/// of radius `body` keeps clear of `world` by the front guard's wall rule (internal::line_clear);
+/// nullopt when there is none. A route is planned from the free cell nearest the robot and then
+/// joined to the robot's own position, so from inside the margin its first leg is one the planner
+/// never checked: in willow (16 robots, coordinated, seeds 5 and 15) it clipped a wall corner 0.14
+/// m from the robot's centre (map speckle the team map had as free) and the guard stopped every new
+/// route for 600 s.
+[[nodiscard]] std::optional<Vec2> margin_exit(const BinaryGrid& grid, const BinaryGrid& world,
+                                              Vec2 p, double body, double margin,
+                                              double search = 1.0);
 
 }  // namespace voronav::exploration
