@@ -125,13 +125,15 @@ int run_one(int argc, char** argv) {
       "\"sim_s_per_wall_s\": %.3f, \"traffic_bytes_per_robot\": %.1f, "
       "\"messages_per_robot\": %.2f, \"search_attempts\": %d, \"travel_m\": %.1f, "
       "\"max_robot_cpu_s\": %.3f, \"route_found_by\": \"%s\", \"route_robots\": %d, "
-      "\"paths_lost\": %d, \"options\": \"%s\"}\n",
+      "\"paths_lost\": %d, \"route_length_m\": %.1f, \"source_travel_m\": %.1f, "
+      "\"repairs_executed\": %d, \"changes_on_route\": %d, \"options\": \"%s\"}\n",
       robots, size_m, std::string(voronav::sim::to_string(method)).c_str(),
       static_cast<unsigned long long>(seed), m.success ? "true" : "false", m.route_time_s,
       m.arrival_time_s, m.simulated_s, m.wall_s, m.wall_s > 0 ? m.simulated_s / m.wall_s : 0.0,
       static_cast<double>(m.traffic_bytes) / n, static_cast<double>(m.messages) / n,
       m.search_attempts, m.travel_m, m.max_robot_cpu_s,
       std::string(voronav::sim::to_string(m.route_found_by)).c_str(), m.route_robots, m.paths_lost,
+      m.route_length_m, m.source_travel_m, m.repairs_executed, m.changes_on_route,
       first_option == 8 ? "defaults" : "scale");
   return 0;
 }
