@@ -433,6 +433,15 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
     a.unsticking = false;
     a.escaping = false;
   };
+  // An unstick or margin-escape route: out of the allocation and off the tree while it runs.
+  const auto start_unstick_route = [&](Agent& a, std::vector<Vec2> route) {
+    start_follow(a, std::move(route));
+    a.unsticking = true;
+    a.on_tree = false;
+    a.goal.reset();
+    a.goal_leaf = false;
+    a.reactive_until = 0.0;
+  };
 
   // --- tree dispatch (seed 004) ---
   // Path on `grid` from p to the free cell nearest q (BFS descent, simplified); empty when none.
@@ -691,12 +700,7 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
       }
     }
     if (path.size() >= 2) {
-      start_follow(a, std::move(path));
-      a.unsticking = true;
-      a.on_tree = false;
-      a.goal.reset();
-      a.goal_leaf = false;
-      a.reactive_until = 0.0;
+      start_unstick_route(a, std::move(path));
       ++result.unsticks;
       log_event(t, a, "unstick");
       return true;
@@ -1148,14 +1152,9 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
           exit_at = margin_exit(traversable_of(team_grid(team), plan_radius), blocked, now, body,
                                 plan_radius);
         if (exit_at) {
-          start_follow(a, {now, *exit_at});
+          start_unstick_route(a, {now, *exit_at});
           a.block.on_fired();  // its own 3 s: the clock ran on the route that stopped it
-          a.unsticking = true;
           a.escaping = true;
-          a.on_tree = false;
-          a.goal.reset();
-          a.goal_leaf = false;
-          a.reactive_until = 0.0;
           ++result.margin_escapes;
           log_event(t, a, "margin_escape");
         } else if (o.method == ExplorationMethod::kTree ? o.unstick : o.frontier_unstick) {
