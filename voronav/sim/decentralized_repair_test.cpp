@@ -239,6 +239,13 @@ TEST(DecentralizedRepair, AnUnansweredRepairIsNotResentToTheSameNeighbours) {
   EXPECT_EQ(source_repairs(false), 4) << "sent, then re-sent after 1, 2 and 4 s";
 }
 
+// A saved run of a paper scenario (data/netsim/NAME), with the decentralized method.
+NetSimScenarioFile saved_decentralized_run(const std::string& name) {
+  auto f = load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/" + name);
+  f.options.method = Method::kDecentralized;
+  return f;
+}
+
 // repair_share_met_blocks (issue #13, stop 19): scenario 2, run 9. The only answer to the
 // source's Repair crosses cells of the change that the source knows blocked and the answerer
 // does not: the source refuses it, waits, and goes on by a new Search without a Repair. With the
@@ -249,9 +256,7 @@ TEST(DecentralizedRepair, AnUnansweredRepairIsNotResentToTheSameNeighbours) {
 // the change the source saw and its answerer did not) and executes no Repair. Returns the
 // scenario file and the run's metrics after checking exactly that.
 std::pair<NetSimScenarioFile, NetSimMetrics> refused_run9_without_either_rule() {
-  auto f =
-      load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/s2_run9_refused.yaml");
-  f.options.method = Method::kDecentralized;
+  auto f = saved_decentralized_run("s2_run9_refused.yaml");
   f.options.repair_share_met_blocks = false;
   f.options.repair_fix_answer = false;
   const auto off = run_netsim(f.scenario, f.options).metrics;
@@ -300,9 +305,7 @@ TEST(DecentralizedRepair, TheSourceRepairsARefusedAnswerOnItsOwnMap) {
 // beyond two hops. That answerer had not seen the change either, so the source refuses it as
 // blocked in its own map; with repair_fix_answer too it repairs that answer and executes a Repair.
 TEST(DecentralizedRepair, AnUnansweredRepairIsSentAgainFarther) {
-  auto f = load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) +
-                                "/data/netsim/s3_run7_unanswered.yaml");
-  f.options.method = Method::kDecentralized;
+  auto f = saved_decentralized_run("s3_run7_unanswered.yaml");
   f.options.repair_expand_hops = 0;
   f.options.repair_fix_answer = false;
   const auto off = run_netsim(f.scenario, f.options).metrics;
@@ -335,9 +338,7 @@ TEST(DecentralizedRepair, AnUnansweredRepairIsSentAgainFarther) {
 // repair_fix_seen_only that A* first keeps to cells the source knows free and the answer's free
 // discs, and here it finds such a walk (without the option the walk may cross unknown cells).
 TEST(DecentralizedRepair, ARepairedAnswerKeepsToSpaceSeenFree) {
-  auto f =
-      load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/s2_run7_fix_seen.yaml");
-  f.options.method = Method::kDecentralized;
+  auto f = saved_decentralized_run("s2_run7_fix_seen.yaml");
   f.options.repair_fix_answer = true;
   f.options.repair_fix_seen_only = false;
   const auto any = run_netsim(f.scenario, f.options).metrics;
