@@ -169,13 +169,13 @@ struct ExplorationOptions {
   bool drop_goalless_routes = false;
   /// Ours (issue 14, stop 23), every method: a robot that the progress watchdog finds on one spot
   /// while its centre is inside the planning margin (nearer than the body radius + clearance to a
-  /// known obstacle of the team map) first drives straight to the nearest cell outside it that its
-  /// disc can reach without touching a wall (margin_exit, unstick.hpp), as an unstick route;
-  /// then it takes goals (or its tree legs) again, on routes the planner checked. Routes are
-  /// planned from the free cell nearest a robot and joined to its position, so from inside the
-  /// margin the first leg can clip a wall corner: traced on willow (16 robots, coordinated,
-  /// seed 5), a robot 0.14 m from a corner was given new routes from that spot for 600 s, every
-  /// one stopped by the front guard (stalled). `margin_escapes` counts them.
+  /// known obstacle of the team map, or to a wall its front guard senses) first drives straight to
+  /// the nearest cell outside it that its disc can reach without touching a wall (margin_exit,
+  /// unstick.hpp), as an unstick route; then it takes goals (or its tree legs) again, on routes the
+  /// planner checked. Routes are planned from the free cell nearest a robot and joined to its
+  /// position, so from inside the margin the first leg can clip a wall corner: traced on willow (16
+  /// robots, coordinated, seed 5), a robot 0.14 m from a corner was given new routes from that spot
+  /// for 600 s, every one stopped by the front guard (stalled). `margin_escapes` counts them.
   bool margin_escape = false;
   /// The front guard's rule (see FrontGuard); every method.
   FrontGuard guard = FrontGuard::kCorridor;

@@ -6,15 +6,18 @@
 // robot stood on that spot for 600 s (stalled). From the exit the same leg is clear.
 #include <gtest/gtest.h>
 
+#include "voronav/exploration/explorer.hpp"
 #include "voronav/exploration/internal/front_guard.hpp"
 #include "voronav/exploration/unstick.hpp"
 #include "voronav/planning/grid_planner.hpp"
+#include "voronav/robot/diff_drive.hpp"
 
 namespace voronav::exploration {
 namespace {
 
-constexpr double kBody = 0.12;    // DiffDriveOptions::body_radius
-constexpr double kMargin = 0.22;  // body + ExplorationOptions::clearance
+// The runner's defaults: the body radius, and the planning margin (body + clearance) = 0.22 m.
+const double kBody = robot::DiffDriveOptions{}.body_radius;
+const double kMargin = kBody + ExplorationOptions{}.clearance;
 
 // A 4 x 4 m room of 0.1 m cells, walled at its edge, with a 2 x 3 cell block (the speckle) whose
 // lower-left corner is at (2.0, 2.0) m.
