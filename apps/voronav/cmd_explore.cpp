@@ -39,6 +39,7 @@ struct ExploreArgs {
   int crowd_limit = 0;
   std::string drop_goalless_routes = "off";
   std::string margin_escape = "off";
+  std::string skip_known_leaves = "off";
   std::string guard = "corridor";
   std::uint64_t seed = 1;
   std::string start;
@@ -131,6 +132,7 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                 {"crowd_limit", a.crowd_limit},
                 {"drop_goalless_routes", a.drop_goalless_routes},
                 {"margin_escape", a.margin_escape},
+                {"skip_known_leaves", a.skip_known_leaves},
                 {"guard", a.guard},
                 {"seed", a.seed},
                 {"stop_at_coverage", a.stop_at}};
@@ -176,6 +178,7 @@ void run(const ExploreArgs& a) {
   o.crowd_limit = a.crowd_limit;
   o.drop_goalless_routes = a.drop_goalless_routes == "on";
   o.margin_escape = a.margin_escape == "on";
+  o.skip_known_leaves = a.skip_known_leaves == "on";
   o.guard = exploration::parse_front_guard(a.guard);
   o.seed = a.seed;
   o.stop_at_coverage = a.stop_at;
@@ -310,6 +313,10 @@ void setup(CLI::App& app) {
              "every method: a robot on one spot for 20 s that stands nearer than body + "
              "clearance to a known wall first drives straight out of that margin (on, ours) "
              "or is given routes from where it stands (off)");
+  add_on_off(cmd, "--skip-known-leaves", args->skip_known_leaves,
+             "tree: a robot skips its dispatched leaves whose surroundings the team map already "
+             "knows (less than --min-leaf-gain unknown) and drives on to its next leaf (on, ours) "
+             "or visits every leaf in figure 9's order (off, the paper)");
   cmd->add_option("--guard", args->guard,
                   "every method: the front guard of a robot on its route stops for anything "
                   "within 0.24 m in a +-40 deg fan (cone) or for a robot there and for a wall only "

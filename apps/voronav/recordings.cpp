@@ -294,7 +294,9 @@ report::Recording exploration_recording(const exploration::ExplorationResult& re
     const std::string text = e.kind == "leaf"       ? who + " reaches a tree leaf"
                              : e.kind == "watchdog" ? who + " gives up its goal (no progress)"
                              : e.kind == "stalled"  ? who + " is stalled"
-                                                    : who + " " + e.kind;
+                             : e.kind == "leaf_skipped"
+                                 ? who + " skips a tree leaf the team already knows"
+                                 : who + " " + e.kind;
     rec.events.push_back({e.t, e.kind, text, e.robot});
   }
   std::stable_sort(

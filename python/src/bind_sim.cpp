@@ -385,6 +385,8 @@ void bind_sim(py::module_& m) {
                      "frontier methods (CLI --drop-goalless-routes on|off)")
       .def_readwrite("margin_escape", &ex::ExplorationOptions::margin_escape,
                      "every method (CLI --margin-escape on|off)")
+      .def_readwrite("skip_known_leaves", &ex::ExplorationOptions::skip_known_leaves,
+                     "tree (CLI --skip-known-leaves on|off)")
       .def_readwrite("guard", &ex::ExplorationOptions::guard,
                      "every method: FrontGuard cone|corridor (CLI --guard)")
       .def_readwrite("controller", &ex::ExplorationOptions::controller,

@@ -107,6 +107,7 @@ def test_explore_options_match_the_cli(cli):
     o.tree_leg_replan = "none"
     o.unstick = False
     o.guard = "cone"
+    o.skip_known_leaves = True
     o.controller.random_turn_rate = 0.3  # in place: the field is the options' own member
     o.controller.avoid_escape = "spin"
     assert o.controller.random_turn_rate == pytest.approx(0.3)
@@ -114,9 +115,9 @@ def test_explore_options_match_the_cli(cli):
     got = cli("explore", "--world", "paper", "--robots", "2", "--time", "60", "--seed", "3",
               "--tree-start", "20", "--tree-replan", "robots", "--tree-leg-replan", "none",
               "--unstick", "off", "--random-turn-rate", "0.3", "--avoid-escape", "spin",
-              "--guard", "cone")
+              "--guard", "cone", "--skip-known-leaves", "on")
     for key in ("coverage", "distance_m", "feature_points", "leaves", "dispatches", "escapes",
-                "unsticks", "collisions", "guard_wall_stops", "guard_robot_stops"):
+                "unsticks", "collisions", "guard_wall_stops", "guard_robot_stops", "leaves_skipped"):
         assert res[key] == pytest.approx(got[key], rel=1e-5), key
     default = vn.explore.run(vn.explore.paper_world(), method="tree", robots=2, time_limit=60.0,
                              seed=3, tree_start_time=20.0, start=vn.Vec2(2.0, 2.0))

@@ -12,6 +12,7 @@ namespace voronav::exploration::internal {
 
 // The next leg of a robot's tree route, or (none left) the end of its dispatch.
 void TeamRun::start_leg(Agent& a, double t) {
+  if (o.skip_known_leaves) skip_known_leaves(a, t);
   if (!a.legs.empty()) {
     start_follow(a, a.legs.front());
     a.on_tree = true;
@@ -22,6 +23,32 @@ void TeamRun::start_leg(Agent& a, double t) {
   a.mode = AgentMode::kReactive;  // the paper: search reactively again
   a.route.clear();
   a.retry_at = t;
+}
+
+// ExplorationOptions::skip_known_leaves (ours): the legs whose leaves the team map already knows
+// are dropped; the next one is planned from where the robot stands (its tree route started at the
+// leaf before, which the robot did not visit). A leaf out of reach from here is given up.
+void TeamRun::skip_known_leaves(Agent& a, double t) {
+  if (a.legs.empty()) return;
+  const OccupancyGrid tg = team_grid(team);
+  bool skipped = false;
+  while (!a.legs.empty() && unknown_fraction(tg, a.legs.front().back()) < o.min_leaf_gain) {
+    a.legs.pop_front();
+    ++result.leaves_skipped;
+    log_event(t, a, "leaf_skipped");
+    skipped = true;
+  }
+  if (!skipped) return;
+  const BinaryGrid opt = tree_grid(tg, plan_radius);
+  while (!a.legs.empty()) {
+    const Vec2 leaf = a.legs.front().back();
+    std::vector<Vec2> path = path_on(opt, a.body.true_pose().position, leaf);
+    if (path.size() >= 2 && distance(path.back(), leaf) <= 0.5) {
+      a.legs.front() = std::move(path);
+      return;
+    }
+    a.legs.pop_front();
+  }
 }
 
 void TeamRun::finish_leg(Agent& a, double t) {
@@ -153,11 +180,19 @@ void TeamRun::check_tree_routes(double t) {
   for (auto& ap : agents)
     any = any || (ap->on_tree && ap->mode == AgentMode::kFollow);
   if (!any) return;
-  const BinaryGrid opt = tree_grid(team_grid(team), plan_radius);
+  const OccupancyGrid tg = team_grid(team);
+  const BinaryGrid opt = tree_grid(tg, plan_radius);
   for (auto& ap : agents) {
     Agent& a = *ap;
     if (!a.on_tree || a.mode != AgentMode::kFollow || t < a.reactive_until) continue;
     const Vec2 pos = a.body.true_pose().position;
+    // ExplorationOptions::skip_known_leaves: a leaf the team came to know (by another robot: one
+    // within gain_radius of it is about to reach it) ends the leg here.
+    if (o.skip_known_leaves && !a.legs.empty() && distance(pos, a.route.back()) > o.gain_radius &&
+        unknown_fraction(tg, a.route.back()) < o.min_leaf_gain) {
+      start_leg(a, t);
+      continue;
+    }
     bool ok = nearest_free(opt, a.route.back(), 1).has_value();
     const auto pc = g.world_to_cell(pos);
     if (ok && a.next < a.route.size() && pc && opt[*pc] == 0)
