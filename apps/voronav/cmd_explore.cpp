@@ -40,6 +40,7 @@ struct ExploreArgs {
   std::string drop_goalless_routes = "off";
   std::string margin_escape = "off";
   std::string skip_known_leaves = "off";
+  std::string gain_through_free = "off";
   std::string guard = "corridor";
   std::uint64_t seed = 1;
   std::string start;
@@ -133,6 +134,7 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                 {"drop_goalless_routes", a.drop_goalless_routes},
                 {"margin_escape", a.margin_escape},
                 {"skip_known_leaves", a.skip_known_leaves},
+                {"gain_through_free", a.gain_through_free},
                 {"guard", a.guard},
                 {"seed", a.seed},
                 {"stop_at_coverage", a.stop_at}};
@@ -179,6 +181,7 @@ void run(const ExploreArgs& a) {
   o.drop_goalless_routes = a.drop_goalless_routes == "on";
   o.margin_escape = a.margin_escape == "on";
   o.skip_known_leaves = a.skip_known_leaves == "on";
+  o.gain_through_free = a.gain_through_free == "on";
   o.guard = exploration::parse_front_guard(a.guard);
   o.seed = a.seed;
   o.stop_at_coverage = a.stop_at;
@@ -317,6 +320,10 @@ void setup(CLI::App& app) {
              "tree: a robot skips its dispatched leaves whose surroundings the team map already "
              "knows (less than --min-leaf-gain unknown) and drives on to its next leaf (on, ours) "
              "or visits every leaf in figure 9's order (off, the paper)");
+  add_on_off(cmd, "--gain-through-free", args->gain_through_free,
+             "tree-frontier, --tree-replan robots, --skip-known-leaves: a target's information "
+             "gain counts only the unknown cells within 3 m that connect to it through cells not "
+             "known occupied (on, ours) or every unknown cell within 3 m (off)");
   cmd->add_option("--guard", args->guard,
                   "every method: the front guard of a robot on its route stops for anything "
                   "within 0.24 m in a +-40 deg fan (cone) or for a robot there and for a wall only "

@@ -387,6 +387,8 @@ void bind_sim(py::module_& m) {
                      "every method (CLI --margin-escape on|off)")
       .def_readwrite("skip_known_leaves", &ex::ExplorationOptions::skip_known_leaves,
                      "tree (CLI --skip-known-leaves on|off)")
+      .def_readwrite("gain_through_free", &ex::ExplorationOptions::gain_through_free,
+                     "targets' information gain (CLI --gain-through-free on|off)")
       .def_readwrite("guard", &ex::ExplorationOptions::guard,
                      "every method: FrontGuard cone|corridor (CLI --guard)")
       .def_readwrite("controller", &ex::ExplorationOptions::controller,

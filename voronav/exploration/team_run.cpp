@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "voronav/core/error.hpp"
+#include "voronav/exploration/internal/information_gain.hpp"
 #include "voronav/exploration/internal/plan_grid.hpp"
 #include "voronav/field/distance_transform.hpp"
 
@@ -230,18 +231,7 @@ void TeamRun::log_event(double t, const Agent& a, const char* kind) {
 }
 
 double TeamRun::unknown_fraction(const OccupancyGrid& map, Vec2 p) const {
-  const auto c = g.world_to_cell(p);
-  if (!c) return 0.0;
-  const int r = static_cast<int>(std::ceil(o.gain_radius / g.resolution));
-  int unknown = 0, all = 0;
-  for (int dy = -r; dy <= r; ++dy)
-    for (int dx = -r; dx <= r; ++dx) {
-      const Cell n{c->x + dx, c->y + dy};
-      if (dx * dx + dy * dy > r * r) continue;
-      ++all;
-      if (!map.contains(n) || map[n] == kUnknown) ++unknown;
-    }
-  return all ? static_cast<double>(unknown) / all : 0.0;
+  return information_gain(map, p, o.gain_radius, o.gain_through_free);
 }
 
 // Robot-aware planning: for robot i, the discs of the other robots within kRobotAwareRange
