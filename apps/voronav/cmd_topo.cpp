@@ -40,6 +40,7 @@ struct TopoArgs {
   topology::WallOpeningOptions wall = topology::TopologyOptions{}.wall_openings;
   bool wall_first = topology::TopologyOptions{}.wall_openings_first;
   bool basis_across = topology::TopologyOptions{}.basis_across;
+  double furniture_line_area = topology::TopologyOptions{}.furniture_line_area;
   bool json = false;
   std::filesystem::path mcap;
 };
@@ -73,6 +74,7 @@ void run(const TopoArgs& a) {
   opt.wall_openings = a.wall;
   opt.wall_openings_first = a.wall_first;
   opt.basis_across = a.basis_across;
+  opt.furniture_line_area = a.furniture_line_area;
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
   const topology::TopologicalMap m = topology::build_topological_map(blocked, opt);
@@ -111,6 +113,7 @@ void run(const TopoArgs& a) {
   j["regions"] = m.regions.size();
   j["absorbed_obstacles"] = m.absorbed_obstacles;
   j["basis_across"] = m.basis_across;
+  j["openings_past_furniture"] = m.openings_past_furniture;
   nlohmann::json nodes = nlohmann::json::array(), edges = nlohmann::json::array();
   const auto outlines = topology::region_outlines(m.region, static_cast<int>(m.regions.size()));
   for (const auto& r : m.regions) {
@@ -283,6 +286,11 @@ void setup(CLI::App& app) {
   cmd->add_option("--wall-gap-first", args->wall_first,
                   "Where a wall-line opening and a narrowing close the same opening, keep the "
                   "wall line (true/false)")
+      ->capture_default_str();
+  cmd->add_option("--furniture-line-area", args->furniture_line_area,
+                  "A narrowing's line ending on an obstacle piece smaller than this [m^2] (a "
+                  "chair, a bin) does not hide a wall-line opening next to it (0 = off)")
+      ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--basis-across", args->basis_across,
                   "Critical points whose two nearest sites lie on one wall (a corner, a corridor's "

@@ -28,6 +28,7 @@ void check_options(const TopologyOptions& o) {
   require_finite_nonneg("TopologyOptions.passage_rise_ratio", o.passage_rise_ratio);
   require_finite_nonneg("TopologyOptions.room_test_elongation", o.room_test_elongation);
   require_finite_nonneg("TopologyOptions.regions_absorb_obstacles", o.regions_absorb_obstacles);
+  require_finite_nonneg("TopologyOptions.furniture_line_area", o.furniture_line_area);
   check_wall_opening_options(o.wall_openings);
 }
 
@@ -297,8 +298,8 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
                           const TopologyOptions& o) {
   const GridGeometry& geo = g.geometry;
   const double res = geo.resolution;
-  TopologicalMap out{geo, g.blocked, diagram, g.clearance, {}, GridMap<std::int32_t>(geo, -1), {},
-                     {},  0,         0};
+  TopologicalMap out{geo, g.blocked, diagram, g.clearance, {}, GridMap<std::int32_t>(geo, -1),
+                     {},  {},        0,       0,           0};
   if (geo.empty()) return out;
 
   // 1. Critical points along the Voronoi graph's edges.
@@ -308,7 +309,7 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
   // Obstacle components under min_wall_area are free-standing furniture: a narrowing between
   // furniture and anything else is not a door (the basis points of a door lie on walls).
   std::vector<std::size_t> component_cells;
-  if (o.min_wall_area > 0.0)
+  if (o.min_wall_area > 0.0 || o.furniture_line_area > 0.0)
     for (std::size_t i = 0; i < g.obstacle_label.size(); ++i) {
       const std::int32_t l = g.obstacle_label[i];
       if (l < 0) continue;
@@ -317,11 +318,18 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
       ++component_cells[static_cast<std::size_t>(l)];
     }
   const double min_wall_cells = o.min_wall_area / (res * res);
-  auto on_furniture = [&](Cell s) {
-    if (o.min_wall_area <= 0.0 || !geo.contains(s)) return false;  // outside: the border wall
+  auto piece_under = [&](Cell s, double cells) {
+    if (!geo.contains(s)) return false;  // outside: the border wall
     const std::int32_t l = g.obstacle_label[s];
-    return l >= 0 &&
-           static_cast<double>(component_cells[static_cast<std::size_t>(l)]) < min_wall_cells;
+    return l >= 0 && static_cast<double>(component_cells[static_cast<std::size_t>(l)]) < cells;
+  };
+  auto on_furniture = [&](Cell s) {
+    return o.min_wall_area > 0.0 && piece_under(s, min_wall_cells);
+  };
+  const double furniture_line_cells = o.furniture_line_area / (res * res);
+  auto furniture_line = [&](Cell s1, Cell s2) {
+    return o.furniture_line_area > 0.0 &&
+           (piece_under(s1, furniture_line_cells) || piece_under(s2, furniture_line_cells));
   };
   BinaryGrid cut(geo, 0);
   // Openings in wall lines (wall_openings.hpp) and narrowings can find the same opening; two
@@ -331,6 +339,9 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
   const bool walls = o.wall_openings.max_width > 0.0;
   const int reach = static_cast<int>(std::ceil(0.5 * o.wall_openings.max_wall_thickness / res)) + 2;
   BinaryGrid wall_cut(geo, 0);
+  // The narrowings' lines that can hide a wall-line opening: all but those ending on furniture
+  // (furniture_line_area): a line from a door's jamb to a chair beside it does not close the door.
+  BinaryGrid narrowing_cut(geo, 0);
   auto near_cut = [&](const std::vector<Cell>& line, const BinaryGrid& grid) {
     for (const Cell c : line)
       for (int dy = -reach; dy <= reach; ++dy)
@@ -344,7 +355,8 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
   if (walls) openings = find_wall_openings(g.blocked, o.wall_openings);
   auto add_openings = [&] {
     for (WallOpening& op : openings) {
-      if (near_cut(op.line, cut)) continue;
+      if (near_cut(op.line, narrowing_cut)) continue;
+      if (!o.wall_openings_first && near_cut(op.line, cut)) ++out.openings_past_furniture;
       CriticalPoint cp;
       cp.basis = op.jambs;
       cp.clearance_m = 0.5 * op.width_cells * res;
@@ -411,8 +423,11 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     });
     if (cp.line.empty()) continue;
     if (walls && o.wall_openings_first && near_cut(cp.line, wall_cut)) continue;
-    for (const Cell c : cp.line)
+    const bool hides = !furniture_line(s1, s2);
+    for (const Cell c : cp.line) {
       cut[c] = 1;
+      if (hides) narrowing_cut[c] = 1;
+    }
     out.critical_points.push_back(std::move(cp));
   }
   if (walls && !o.wall_openings_first) add_openings();

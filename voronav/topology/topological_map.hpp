@@ -105,6 +105,11 @@ struct TopologyOptions {
   /// Where a wall-line opening and a narrowing's critical line close the same opening, keep the
   /// wall line (true) or the narrowing's line (false).
   bool wall_openings_first = false;
+  /// A narrowing's line with a basis point on an obstacle piece (8-connected) smaller than this
+  /// [m^2] (a chair, a bin, a pillar) does not hide a wall-line opening next to it (the rule
+  /// above): a line from a door's jamb to a chair standing beside it does not close the door,
+  /// so the door's wall-line opening is kept; 0 = off (every narrowing's line hides one).
+  double furniture_line_area = 0.0;
   /// A critical point whose two nearest sites lie on one wall (the neighbourhood's farthest site
   /// closer to the first than 1.5 x the clearance, at a corner or a corridor's mouth) gets as its
   /// second basis point the obstacle across it, on the ray from the first through the point, so
@@ -152,6 +157,9 @@ struct TopologicalMap {
   std::vector<TopoEdge> edges;
   std::size_t absorbed_obstacles = 0;  ///< obstacle pieces joined to a region
   std::size_t basis_across = 0;        ///< critical points given a basis point across them
+  /// Wall-line openings kept although a narrowing's line ending on furniture lies next to them
+  /// (TopologyOptions::furniture_line_area).
+  std::size_t openings_past_furniture = 0;
 
   /// The region of a free cell, -1 for blocked (also absorbed) or outside cells.
   [[nodiscard]] int region_of(Cell c) const {
