@@ -34,6 +34,7 @@ struct TopoArgs {
   double passage_length = topology::TopologyOptions{}.passage_length;
   double passage_rise_ratio = topology::TopologyOptions{}.passage_rise_ratio;
   bool passage_bulges = topology::TopologyOptions{}.passage_bulges;
+  bool passage_junctions = topology::TopologyOptions{}.passage_junctions;
   bool validate_sides = topology::TopologyOptions{}.validate_sides;
   double room_test_elongation = topology::TopologyOptions{}.room_test_elongation;
   double min_wall_area = topology::TopologyOptions{}.min_wall_area;
@@ -68,6 +69,7 @@ void run(const TopoArgs& a) {
   opt.passage_length = a.passage_length;
   opt.passage_rise_ratio = a.passage_rise_ratio;
   opt.passage_bulges = a.passage_bulges;
+  opt.passage_junctions = a.passage_junctions;
   opt.validate_sides = a.validate_sides;
   opt.room_test_elongation = a.room_test_elongation;
   opt.min_wall_area = a.min_wall_area;
@@ -107,13 +109,19 @@ void run(const TopoArgs& a) {
                    {"clearance_m", cp.clearance_m},
                    {"basis", {{cp.basis[0].x, cp.basis[0].y}, {cp.basis[1].x, cp.basis[1].y}}},
                    {"separates", cp.separates},
-                   {"source", cp.wall_gap ? "wall_gap" : "narrowing"}});
+                   {"source", cp.wall_gap           ? "wall_gap"
+                              : cp.passage_junction ? "passage_junction"
+                                                    : "narrowing"}});
   }
   j["critical_points"] = cps;
   j["regions"] = m.regions.size();
   j["absorbed_obstacles"] = m.absorbed_obstacles;
   j["basis_across"] = m.basis_across;
   j["openings_past_furniture"] = m.openings_past_furniture;
+  std::size_t junction_cuts = 0;
+  for (const auto& cp : m.critical_points)
+    junction_cuts += cp.passage_junction ? 1 : 0;
+  j["passage_junctions"] = junction_cuts;
   nlohmann::json nodes = nlohmann::json::array(), edges = nlohmann::json::array();
   const auto outlines = topology::region_outlines(m.region, static_cast<int>(m.regions.size()));
   for (const auto& r : m.regions) {
@@ -246,6 +254,10 @@ void setup(CLI::App& app) {
   cmd->add_option("--passage-bulges", args->passage_bulges,
                   "A passage goes on through a bend or widening that narrows again before it "
                   "opens, and is cut at that last narrowing (true/false)")
+      ->capture_default_str();
+  cmd->add_option("--passage-junctions", args->passage_junctions,
+                  "A passage open at one end that runs into a junction of narrower branches "
+                  "(doors, a narrower corridor) is cut there too (true/false)")
       ->capture_default_str();
   cmd->add_option("--validate-sides", args->validate_sides,
                   "Room test: drop a critical line when a region it separates is no wider than "

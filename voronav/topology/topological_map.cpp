@@ -52,6 +52,7 @@ class MinimaFinder {
         passage_(o.passage_length / res),
         passage_rise_(o.passage_rise_ratio),
         bulges_(o.passage_bulges),
+        junctions_(o.passage_junctions),
         incident_(graph.nodes.size()) {
     for (std::size_t e = 0; e < graph.edges.size(); ++e) {
       incident_[static_cast<std::size_t>(graph.edges[e].a)].push_back({static_cast<int>(e), 1});
@@ -59,7 +60,10 @@ class MinimaFinder {
     }
   }
 
-  void run(std::vector<Cell>* out) {
+  // Critical points into *out; the passage ends at junctions (passage_junctions) also into
+  // *junction_cuts.
+  void run(std::vector<Cell>* out, std::vector<Cell>* junction_cuts) {
+    junction_cuts_ = junction_cuts;
     for (std::size_t e = 0; e < graph_.edges.size(); ++e)
       edge(static_cast<int>(e), out);
   }
@@ -135,6 +139,23 @@ class MinimaFinder {
         visits = 0;
         wide_right =
             right && rises(e, static_cast<std::ptrdiff_t>(j) + 1, 1, m, need2, budget0, &visits);
+      }
+      if (junctions_ && passage_ > 0.0 && left != right && junction_cuts_ != nullptr) {
+        // A passage (the run within one cell of the minimum, at least passage_length) whose
+        // clearance rises at one end and whose other end runs into a junction of narrower
+        // branches (passage_junctions) is cut at that other end.
+        std::size_t bl = i, br = j;
+        while (bl > 0 && v[bl - 1] >= m && v[bl - 1] <= m + 1.0)
+          --bl;
+        while (br + 1 < n && v[br + 1] >= m && v[br + 1] <= m + 1.0)
+          ++br;
+        const double need2 = std::max(need, m * (1.0 + passage_rise_));
+        if (static_cast<double>(br - bl + 1) >= passage_) {
+          if (left && ends_in_narrower(e, v, br, 1, m, need2))
+            junction_cuts_->push_back(ed.cells[br]);
+          if (right && ends_in_narrower(e, v, bl, -1, m, need2))
+            junction_cuts_->push_back(ed.cells[bl]);
+        }
       }
       if (wide_left || wide_right) {
         // A passage: the run of cells around the minimum whose clearance stays within one cell
@@ -225,10 +246,41 @@ class MinimaFinder {
     return end;
   }
 
+  // Whether the passage whose last band cell is `last` on edge e (walking in direction `step`)
+  // runs into a junction of narrower passages: every cell from there to the edge's end stays
+  // at least m and below the opening rise `need`, the end node is a junction, and every other
+  // branch there narrows below the passage's band (its least clearance under m - 1 cell: a door,
+  // a narrower corridor), so the passage does not go on through the junction.
+  bool ends_in_narrower(int e, const std::vector<double>& v, std::size_t last, int step, double m,
+                        double need) const {
+    const auto n = static_cast<std::ptrdiff_t>(v.size());
+    const auto k0 = static_cast<std::ptrdiff_t>(last);
+    if (k0 + step < 0 || k0 + step >= n) return false;  // the cut needs a cell beyond it
+    for (std::ptrdiff_t q = k0 + step; q >= 0 && q < n; q += step) {
+      const double x = v[static_cast<std::size_t>(q)];
+      if (x < m || x >= need) return false;
+    }
+    const auto& ed = graph_.edges[static_cast<std::size_t>(e)];
+    const int node = step > 0 ? ed.b : ed.a;
+    if (graph_.nodes[static_cast<std::size_t>(node)].kind != voronoi::VoronoiNodeKind::kJunction)
+      return false;
+    int others = 0;
+    for (const auto& [e2, dir] : incident_[static_cast<std::size_t>(node)]) {
+      if (e2 == e && dir == -step) continue;  // the passage's own end
+      ++others;
+      double least = HUGE_VAL;
+      for (const Cell c : graph_.edges[static_cast<std::size_t>(e2)].cells)
+        least = std::min(least, static_cast<double>(clearance_[c]));
+      if (!(least < m - 1.0)) return false;
+    }
+    return others >= 2;
+  }
+
   const voronoi::VoronoiGraph& graph_;
   const GridMap<float>& clearance_;
   double min_rise_, rise_ratio_, walk_, passage_, passage_rise_;
-  bool bulges_;
+  bool bulges_, junctions_;
+  std::vector<Cell>* junction_cuts_ = nullptr;
   std::vector<std::vector<std::pair<int, int>>> incident_;  // node -> (edge, +1 from a / -1 from b)
 };
 
@@ -304,8 +356,10 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
 
   // 1. Critical points along the Voronoi graph's edges.
   const voronoi::VoronoiGraph graph = voronoi::build_voronoi_graph(diagram, g.clearance);
-  std::vector<Cell> minima;
-  MinimaFinder(graph, g.clearance, o, res).run(&minima);
+  std::vector<Cell> minima, junction_cuts;
+  MinimaFinder(graph, g.clearance, o, res).run(&minima, &junction_cuts);
+  const std::size_t n_narrowings = minima.size();
+  minima.insert(minima.end(), junction_cuts.begin(), junction_cuts.end());
   // Obstacle components under min_wall_area are free-standing furniture: a narrowing between
   // furniture and anything else is not a door (the basis points of a door lie on walls).
   std::vector<std::size_t> component_cells;
@@ -369,7 +423,8 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     }
   };
   if (walls && o.wall_openings_first) add_openings();
-  for (const Cell p : minima) {
+  for (std::size_t mi = 0; mi < minima.size(); ++mi) {
+    const Cell p = minima[mi];
     const double clear = static_cast<double>(g.clearance[p]);
     if (!std::isfinite(clear)) continue;
     if (o.max_door_width > 0.0 && 2.0 * clear * res > o.max_door_width) continue;
@@ -409,6 +464,7 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     CriticalPoint cp;
     cp.cell = p;
     cp.basis = {s1, s2};
+    cp.passage_junction = mi >= n_narrowings;
     cp.clearance_m = clear * res;
     const double mx = 0.5 * (s1.x + s2.x), my = 0.5 * (s1.y + s2.y);
     double best = HUGE_VAL;
@@ -423,7 +479,9 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     });
     if (cp.line.empty()) continue;
     if (walls && o.wall_openings_first && near_cut(cp.line, wall_cut)) continue;
-    const bool hides = !furniture_line(s1, s2);
+    // A line on furniture, or a passage's end at a junction (it closes the passage's mouth,
+    // not a door beside the junction), hides no wall-line opening.
+    const bool hides = !furniture_line(s1, s2) && !cp.passage_junction;
     for (const Cell c : cp.line) {
       cut[c] = 1;
       if (hides) narrowing_cut[c] = 1;
@@ -499,6 +557,9 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
       changed = false;
       for (std::size_t k = 0; k < out.critical_points.size(); ++k) {
         if (sides[k].first < 0) continue;
+        // A passage's end at a junction of narrower passages separates two passages of
+        // different widths by construction: the room test does not apply.
+        if (out.critical_points[k].passage_junction) continue;
         const int a = uf.find(sides[k].first), b = uf.find(sides[k].second);
         if (a == b) continue;
         const double m = out.critical_points[k].clearance_m / res;
