@@ -393,9 +393,11 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
   const bool walls = o.wall_openings.max_width > 0.0;
   const int reach = static_cast<int>(std::ceil(0.5 * o.wall_openings.max_wall_thickness / res)) + 2;
   BinaryGrid wall_cut(geo, 0);
-  // The narrowings' lines that can hide a wall-line opening: all but those ending on furniture
-  // (furniture_line_area): a line from a door's jamb to a chair beside it does not close the door.
-  BinaryGrid narrowing_cut(geo, 0);
+  // The lines that can hide a wall-line opening (the earlier openings and the narrowings' lines)
+  // all but the narrowings' lines ending on furniture (furniture_line_area: a line from a door's
+  // jamb to a chair beside it does not close the door) and the passage ends at junctions (they
+  // close the passage's mouth, not a door beside it); furniture_cut: the former, for the count.
+  BinaryGrid hiding_cut(geo, 0), furniture_cut(geo, 0);
   auto near_cut = [&](const std::vector<Cell>& line, const BinaryGrid& grid) {
     for (const Cell c : line)
       for (int dy = -reach; dy <= reach; ++dy)
@@ -409,8 +411,8 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
   if (walls) openings = find_wall_openings(g.blocked, o.wall_openings);
   auto add_openings = [&] {
     for (WallOpening& op : openings) {
-      if (near_cut(op.line, narrowing_cut)) continue;
-      if (!o.wall_openings_first && near_cut(op.line, cut)) ++out.openings_past_furniture;
+      if (near_cut(op.line, hiding_cut)) continue;
+      if (near_cut(op.line, furniture_cut)) ++out.openings_past_furniture;
       CriticalPoint cp;
       cp.basis = op.jambs;
       cp.clearance_m = 0.5 * op.width_cells * res;
@@ -418,7 +420,7 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
       cp.cell = cp.midpoint = cp.line[cp.line.size() / 2];
       cp.wall_gap = true;
       for (const Cell c : cp.line)
-        cut[c] = wall_cut[c] = 1;
+        cut[c] = wall_cut[c] = hiding_cut[c] = 1;
       out.critical_points.push_back(std::move(cp));
     }
   };
@@ -481,10 +483,12 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     if (walls && o.wall_openings_first && near_cut(cp.line, wall_cut)) continue;
     // A line on furniture, or a passage's end at a junction (it closes the passage's mouth,
     // not a door beside the junction), hides no wall-line opening.
-    const bool hides = !furniture_line(s1, s2) && !cp.passage_junction;
+    const bool furniture = furniture_line(s1, s2);
+    const bool hides = !furniture && !cp.passage_junction;
     for (const Cell c : cp.line) {
       cut[c] = 1;
-      if (hides) narrowing_cut[c] = 1;
+      if (hides) hiding_cut[c] = 1;
+      if (furniture) furniture_cut[c] = 1;
     }
     out.critical_points.push_back(std::move(cp));
   }
