@@ -34,12 +34,14 @@ struct TopoArgs {
   double passage_length = topology::TopologyOptions{}.passage_length;
   double passage_rise_ratio = topology::TopologyOptions{}.passage_rise_ratio;
   bool passage_bulges = topology::TopologyOptions{}.passage_bulges;
+  bool passage_junctions = topology::TopologyOptions{}.passage_junctions;
   bool validate_sides = topology::TopologyOptions{}.validate_sides;
   double room_test_elongation = topology::TopologyOptions{}.room_test_elongation;
   double min_wall_area = topology::TopologyOptions{}.min_wall_area;
   topology::WallOpeningOptions wall = topology::TopologyOptions{}.wall_openings;
   bool wall_first = topology::TopologyOptions{}.wall_openings_first;
   bool basis_across = topology::TopologyOptions{}.basis_across;
+  double furniture_line_area = topology::TopologyOptions{}.furniture_line_area;
   bool json = false;
   std::filesystem::path mcap;
 };
@@ -67,12 +69,14 @@ void run(const TopoArgs& a) {
   opt.passage_length = a.passage_length;
   opt.passage_rise_ratio = a.passage_rise_ratio;
   opt.passage_bulges = a.passage_bulges;
+  opt.passage_junctions = a.passage_junctions;
   opt.validate_sides = a.validate_sides;
   opt.room_test_elongation = a.room_test_elongation;
   opt.min_wall_area = a.min_wall_area;
   opt.wall_openings = a.wall;
   opt.wall_openings_first = a.wall_first;
   opt.basis_across = a.basis_across;
+  opt.furniture_line_area = a.furniture_line_area;
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
   const topology::TopologicalMap m = topology::build_topological_map(blocked, opt);
@@ -105,12 +109,19 @@ void run(const TopoArgs& a) {
                    {"clearance_m", cp.clearance_m},
                    {"basis", {{cp.basis[0].x, cp.basis[0].y}, {cp.basis[1].x, cp.basis[1].y}}},
                    {"separates", cp.separates},
-                   {"source", cp.wall_gap ? "wall_gap" : "narrowing"}});
+                   {"source", cp.wall_gap           ? "wall_gap"
+                              : cp.passage_junction ? "passage_junction"
+                                                    : "narrowing"}});
   }
   j["critical_points"] = cps;
   j["regions"] = m.regions.size();
   j["absorbed_obstacles"] = m.absorbed_obstacles;
   j["basis_across"] = m.basis_across;
+  j["openings_past_furniture"] = m.openings_past_furniture;
+  std::size_t junction_cuts = 0;
+  for (const auto& cp : m.critical_points)
+    junction_cuts += cp.passage_junction ? 1 : 0;
+  j["passage_junctions"] = junction_cuts;
   nlohmann::json nodes = nlohmann::json::array(), edges = nlohmann::json::array();
   const auto outlines = topology::region_outlines(m.region, static_cast<int>(m.regions.size()));
   for (const auto& r : m.regions) {
@@ -244,6 +255,10 @@ void setup(CLI::App& app) {
                   "A passage goes on through a bend or widening that narrows again before it "
                   "opens, and is cut at that last narrowing (true/false)")
       ->capture_default_str();
+  cmd->add_option("--passage-junctions", args->passage_junctions,
+                  "A passage open at one end that runs into a junction of narrower branches "
+                  "(doors, a narrower corridor) is cut there too (true/false)")
+      ->capture_default_str();
   cmd->add_option("--validate-sides", args->validate_sides,
                   "Room test: drop a critical line when a region it separates is no wider than "
                   "the line (true/false)")
@@ -283,6 +298,11 @@ void setup(CLI::App& app) {
   cmd->add_option("--wall-gap-first", args->wall_first,
                   "Where a wall-line opening and a narrowing close the same opening, keep the "
                   "wall line (true/false)")
+      ->capture_default_str();
+  cmd->add_option("--furniture-line-area", args->furniture_line_area,
+                  "A narrowing's line ending on an obstacle piece smaller than this [m^2] (a "
+                  "chair, a bin) does not hide a wall-line opening next to it (0 = off)")
+      ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--basis-across", args->basis_across,
                   "Critical points whose two nearest sites lie on one wall (a corner, a corridor's "

@@ -28,6 +28,7 @@ void check_options(const TopologyOptions& o) {
   require_finite_nonneg("TopologyOptions.passage_rise_ratio", o.passage_rise_ratio);
   require_finite_nonneg("TopologyOptions.room_test_elongation", o.room_test_elongation);
   require_finite_nonneg("TopologyOptions.regions_absorb_obstacles", o.regions_absorb_obstacles);
+  require_finite_nonneg("TopologyOptions.furniture_line_area", o.furniture_line_area);
   check_wall_opening_options(o.wall_openings);
 }
 
@@ -51,6 +52,7 @@ class MinimaFinder {
         passage_(o.passage_length / res),
         passage_rise_(o.passage_rise_ratio),
         bulges_(o.passage_bulges),
+        junctions_(o.passage_junctions),
         incident_(graph.nodes.size()) {
     for (std::size_t e = 0; e < graph.edges.size(); ++e) {
       incident_[static_cast<std::size_t>(graph.edges[e].a)].push_back({static_cast<int>(e), 1});
@@ -58,7 +60,10 @@ class MinimaFinder {
     }
   }
 
-  void run(std::vector<Cell>* out) {
+  // Critical points into *out; the passage ends at junctions (passage_junctions) also into
+  // *junction_cuts.
+  void run(std::vector<Cell>* out, std::vector<Cell>* junction_cuts) {
+    junction_cuts_ = junction_cuts;
     for (std::size_t e = 0; e < graph_.edges.size(); ++e)
       edge(static_cast<int>(e), out);
   }
@@ -134,6 +139,23 @@ class MinimaFinder {
         visits = 0;
         wide_right =
             right && rises(e, static_cast<std::ptrdiff_t>(j) + 1, 1, m, need2, budget0, &visits);
+      }
+      if (junctions_ && passage_ > 0.0 && left != right && junction_cuts_ != nullptr) {
+        // A passage (the run within one cell of the minimum, at least passage_length) whose
+        // clearance rises at one end and whose other end runs into a junction of narrower
+        // branches (passage_junctions) is cut at that other end.
+        std::size_t bl = i, br = j;
+        while (bl > 0 && v[bl - 1] >= m && v[bl - 1] <= m + 1.0)
+          --bl;
+        while (br + 1 < n && v[br + 1] >= m && v[br + 1] <= m + 1.0)
+          ++br;
+        const double need2 = std::max(need, m * (1.0 + passage_rise_));
+        if (static_cast<double>(br - bl + 1) >= passage_) {
+          if (left && ends_in_narrower(e, v, br, 1, m, need2))
+            junction_cuts_->push_back(ed.cells[br]);
+          if (right && ends_in_narrower(e, v, bl, -1, m, need2))
+            junction_cuts_->push_back(ed.cells[bl]);
+        }
       }
       if (wide_left || wide_right) {
         // A passage: the run of cells around the minimum whose clearance stays within one cell
@@ -224,10 +246,41 @@ class MinimaFinder {
     return end;
   }
 
+  // Whether the passage whose last band cell is `last` on edge e (walking in direction `step`)
+  // runs into a junction of narrower passages: every cell from there to the edge's end stays
+  // at least m and below the opening rise `need`, the end node is a junction, and every other
+  // branch there narrows below the passage's band (its least clearance under m - 1 cell: a door,
+  // a narrower corridor), so the passage does not go on through the junction.
+  bool ends_in_narrower(int e, const std::vector<double>& v, std::size_t last, int step, double m,
+                        double need) const {
+    const auto n = static_cast<std::ptrdiff_t>(v.size());
+    const auto k0 = static_cast<std::ptrdiff_t>(last);
+    if (k0 + step < 0 || k0 + step >= n) return false;  // the cut needs a cell beyond it
+    for (std::ptrdiff_t q = k0 + step; q >= 0 && q < n; q += step) {
+      const double x = v[static_cast<std::size_t>(q)];
+      if (x < m || x >= need) return false;
+    }
+    const auto& ed = graph_.edges[static_cast<std::size_t>(e)];
+    const int node = step > 0 ? ed.b : ed.a;
+    if (graph_.nodes[static_cast<std::size_t>(node)].kind != voronoi::VoronoiNodeKind::kJunction)
+      return false;
+    int others = 0;
+    for (const auto& [e2, dir] : incident_[static_cast<std::size_t>(node)]) {
+      if (e2 == e && dir == -step) continue;  // the passage's own end
+      ++others;
+      double least = HUGE_VAL;
+      for (const Cell c : graph_.edges[static_cast<std::size_t>(e2)].cells)
+        least = std::min(least, static_cast<double>(clearance_[c]));
+      if (!(least < m - 1.0)) return false;
+    }
+    return others >= 2;
+  }
+
   const voronoi::VoronoiGraph& graph_;
   const GridMap<float>& clearance_;
   double min_rise_, rise_ratio_, walk_, passage_, passage_rise_;
-  bool bulges_;
+  bool bulges_, junctions_;
+  std::vector<Cell>* junction_cuts_ = nullptr;
   std::vector<std::vector<std::pair<int, int>>> incident_;  // node -> (edge, +1 from a / -1 from b)
 };
 
@@ -297,18 +350,20 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
                           const TopologyOptions& o) {
   const GridGeometry& geo = g.geometry;
   const double res = geo.resolution;
-  TopologicalMap out{geo, g.blocked, diagram, g.clearance, {}, GridMap<std::int32_t>(geo, -1), {},
-                     {},  0,         0};
+  TopologicalMap out{geo, g.blocked, diagram, g.clearance, {}, GridMap<std::int32_t>(geo, -1),
+                     {},  {},        0,       0,           0};
   if (geo.empty()) return out;
 
   // 1. Critical points along the Voronoi graph's edges.
   const voronoi::VoronoiGraph graph = voronoi::build_voronoi_graph(diagram, g.clearance);
-  std::vector<Cell> minima;
-  MinimaFinder(graph, g.clearance, o, res).run(&minima);
+  std::vector<Cell> minima, junction_cuts;
+  MinimaFinder(graph, g.clearance, o, res).run(&minima, &junction_cuts);
+  const std::size_t n_narrowings = minima.size();
+  minima.insert(minima.end(), junction_cuts.begin(), junction_cuts.end());
   // Obstacle components under min_wall_area are free-standing furniture: a narrowing between
   // furniture and anything else is not a door (the basis points of a door lie on walls).
   std::vector<std::size_t> component_cells;
-  if (o.min_wall_area > 0.0)
+  if (o.min_wall_area > 0.0 || o.furniture_line_area > 0.0)
     for (std::size_t i = 0; i < g.obstacle_label.size(); ++i) {
       const std::int32_t l = g.obstacle_label[i];
       if (l < 0) continue;
@@ -317,11 +372,18 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
       ++component_cells[static_cast<std::size_t>(l)];
     }
   const double min_wall_cells = o.min_wall_area / (res * res);
-  auto on_furniture = [&](Cell s) {
-    if (o.min_wall_area <= 0.0 || !geo.contains(s)) return false;  // outside: the border wall
+  auto piece_under = [&](Cell s, double cells) {
+    if (!geo.contains(s)) return false;  // outside: the border wall
     const std::int32_t l = g.obstacle_label[s];
-    return l >= 0 &&
-           static_cast<double>(component_cells[static_cast<std::size_t>(l)]) < min_wall_cells;
+    return l >= 0 && static_cast<double>(component_cells[static_cast<std::size_t>(l)]) < cells;
+  };
+  auto on_furniture = [&](Cell s) {
+    return o.min_wall_area > 0.0 && piece_under(s, min_wall_cells);
+  };
+  const double furniture_line_cells = o.furniture_line_area / (res * res);
+  auto furniture_line = [&](Cell s1, Cell s2) {
+    return o.furniture_line_area > 0.0 &&
+           (piece_under(s1, furniture_line_cells) || piece_under(s2, furniture_line_cells));
   };
   BinaryGrid cut(geo, 0);
   // Openings in wall lines (wall_openings.hpp) and narrowings can find the same opening; two
@@ -331,6 +393,11 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
   const bool walls = o.wall_openings.max_width > 0.0;
   const int reach = static_cast<int>(std::ceil(0.5 * o.wall_openings.max_wall_thickness / res)) + 2;
   BinaryGrid wall_cut(geo, 0);
+  // The lines that can hide a wall-line opening (the earlier openings and the narrowings' lines)
+  // all but the narrowings' lines ending on furniture (furniture_line_area: a line from a door's
+  // jamb to a chair beside it does not close the door) and the passage ends at junctions (they
+  // close the passage's mouth, not a door beside it); furniture_cut: the former, for the count.
+  BinaryGrid hiding_cut(geo, 0), furniture_cut(geo, 0);
   auto near_cut = [&](const std::vector<Cell>& line, const BinaryGrid& grid) {
     for (const Cell c : line)
       for (int dy = -reach; dy <= reach; ++dy)
@@ -344,7 +411,8 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
   if (walls) openings = find_wall_openings(g.blocked, o.wall_openings);
   auto add_openings = [&] {
     for (WallOpening& op : openings) {
-      if (near_cut(op.line, cut)) continue;
+      if (near_cut(op.line, hiding_cut)) continue;
+      if (near_cut(op.line, furniture_cut)) ++out.openings_past_furniture;
       CriticalPoint cp;
       cp.basis = op.jambs;
       cp.clearance_m = 0.5 * op.width_cells * res;
@@ -352,12 +420,13 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
       cp.cell = cp.midpoint = cp.line[cp.line.size() / 2];
       cp.wall_gap = true;
       for (const Cell c : cp.line)
-        cut[c] = wall_cut[c] = 1;
+        cut[c] = wall_cut[c] = hiding_cut[c] = 1;
       out.critical_points.push_back(std::move(cp));
     }
   };
   if (walls && o.wall_openings_first) add_openings();
-  for (const Cell p : minima) {
+  for (std::size_t mi = 0; mi < minima.size(); ++mi) {
+    const Cell p = minima[mi];
     const double clear = static_cast<double>(g.clearance[p]);
     if (!std::isfinite(clear)) continue;
     if (o.max_door_width > 0.0 && 2.0 * clear * res > o.max_door_width) continue;
@@ -397,6 +466,7 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     CriticalPoint cp;
     cp.cell = p;
     cp.basis = {s1, s2};
+    cp.passage_junction = mi >= n_narrowings;
     cp.clearance_m = clear * res;
     const double mx = 0.5 * (s1.x + s2.x), my = 0.5 * (s1.y + s2.y);
     double best = HUGE_VAL;
@@ -411,8 +481,15 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
     });
     if (cp.line.empty()) continue;
     if (walls && o.wall_openings_first && near_cut(cp.line, wall_cut)) continue;
-    for (const Cell c : cp.line)
+    // A line on furniture, or a passage's end at a junction (it closes the passage's mouth,
+    // not a door beside the junction), hides no wall-line opening.
+    const bool furniture = furniture_line(s1, s2);
+    const bool hides = !furniture && !cp.passage_junction;
+    for (const Cell c : cp.line) {
       cut[c] = 1;
+      if (hides) hiding_cut[c] = 1;
+      if (furniture) furniture_cut[c] = 1;
+    }
     out.critical_points.push_back(std::move(cp));
   }
   if (walls && !o.wall_openings_first) add_openings();
@@ -484,6 +561,9 @@ TopologicalMap build_from(const voronoi::GeneralizedVoronoi& g, const BinaryGrid
       changed = false;
       for (std::size_t k = 0; k < out.critical_points.size(); ++k) {
         if (sides[k].first < 0) continue;
+        // A passage's end at a junction of narrower passages separates two passages of
+        // different widths by construction: the room test does not apply.
+        if (out.critical_points[k].passage_junction) continue;
         const int a = uf.find(sides[k].first), b = uf.find(sides[k].second);
         if (a == b) continue;
         const double m = out.critical_points[k].clearance_m / res;

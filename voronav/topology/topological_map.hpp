@@ -23,6 +23,11 @@
 //    (CriticalPoint::wall_gap), unless a narrowing's line is next to it. basis_across (off): a
 //    point whose two sites lie on one wall (a notch's jambs at a corridor's mouth) takes the
 //    obstacle across it as its second basis point, so that its line crosses the narrowing.
+//    passage_junctions (off; stop 24): a passage that rises at one end and runs into a junction
+//    of narrower branches at the other (a corridor's foot on a link, beside a door) is cut at
+//    that mouth too (CriticalPoint::passage_junction; not dropped by the room test).
+//    furniture_line_area (off; stop 24): a narrowing's line ending on a small obstacle piece (a
+//    chair beside a door's jamb) no longer hides the door's wall-line opening.
 //  - critical line: the Bresenham segment between the two basis points.
 //  - regions: the free cells cut by the critical lines, 4-connected components; the cells of the
 //    lines join the smallest adjacent region. Merge rule: a region smaller than min_region_area
@@ -80,6 +85,11 @@ struct TopologyOptions {
   /// rise, comes back within one cell of the passage's, the passage goes on (a bend, a short
   /// widening), and it is cut at that last narrowing instead of at the first bump.
   bool passage_bulges = true;
+  /// A passage (as above) that opens at one end and whose other end runs, without opening, into
+  /// a junction where every other branch narrows below the passage's band (a door, a narrower
+  /// corridor: the passage does not go on) is cut at that end too, at its last cell within the
+  /// band before the junction; the room test does not drop such a line. Off.
+  bool passage_junctions = false;
   /// Obstacle components (8-connected) smaller than this [m^2] are free-standing furniture; a
   /// critical point with a basis point on one is not a door and is dropped; 0 = off.
   double min_wall_area = 0.0;
@@ -105,6 +115,11 @@ struct TopologyOptions {
   /// Where a wall-line opening and a narrowing's critical line close the same opening, keep the
   /// wall line (true) or the narrowing's line (false).
   bool wall_openings_first = false;
+  /// A narrowing's line with a basis point on an obstacle piece (8-connected) smaller than this
+  /// [m^2] (a chair, a bin, a pillar) does not hide a wall-line opening next to it (the rule
+  /// above): a line from a door's jamb to a chair standing beside it does not close the door,
+  /// so the door's wall-line opening is kept; 0 = off (every narrowing's line hides one).
+  double furniture_line_area = 0.0;
   /// A critical point whose two nearest sites lie on one wall (the neighbourhood's farthest site
   /// closer to the first than 1.5 x the clearance, at a corner or a corridor's mouth) gets as its
   /// second basis point the obstacle across it, on the ray from the first through the point, so
@@ -121,6 +136,7 @@ struct CriticalPoint {
   Cell midpoint;              ///< the free line cell nearest the middle of the two basis points
   bool separates = true;      ///< whether its two sides are different regions
   bool wall_gap = false;      ///< from an opening in a wall line, not a narrowing of the diagram
+  bool passage_junction = false;  ///< a passage's end at a junction (passage_junctions)
 };
 
 struct Region {
@@ -152,6 +168,9 @@ struct TopologicalMap {
   std::vector<TopoEdge> edges;
   std::size_t absorbed_obstacles = 0;  ///< obstacle pieces joined to a region
   std::size_t basis_across = 0;        ///< critical points given a basis point across them
+  /// Wall-line openings kept although a narrowing's line ending on furniture lies next to them
+  /// (TopologyOptions::furniture_line_area).
+  std::size_t openings_past_furniture = 0;
 
   /// The region of a free cell, -1 for blocked (also absorbed) or outside cells.
   [[nodiscard]] int region_of(Cell c) const {

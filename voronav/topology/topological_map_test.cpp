@@ -539,5 +539,90 @@ TEST(TopologicalMap, BasisAcrossGivesANotchedMouthALineThatCrossesIt) {
   EXPECT_EQ(plain.basis_across, 0U);
 }
 
+TEST(TopologicalMap, ChairBesideADoorDoesNotHideTheDoorsWallOpening) {
+  // Two rooms (0.05 m cells) divided by a wall at x = 50..51 with a 1.2 m door (y = 21..44), and
+  // a chair (an 8-cell ring, 0.04 m^2 of obstacle) in the east room beside the door's north jamb
+  // (issue #15, lab_ipa_furnitures: the bins beside the lab's door). The chair makes the
+  // diagram branch right behind the door, so the door gives no narrowing; the narrowing between
+  // the wall and the chair gives a 4-cell line next to the jamb, which hid the door's wall-line
+  // opening (the two were taken for lines across the same opening): the rooms were one region.
+  // With furniture_line_area the chair's line hides nothing and the door's wall line splits them.
+  BinaryGrid g(GridGeometry{120, 64, 0.05, {}}, 0);
+  fill_rect(g, 0, 0, 119, 0);
+  fill_rect(g, 0, 63, 119, 63);
+  fill_rect(g, 0, 0, 0, 63);
+  fill_rect(g, 119, 0, 119, 63);
+  fill_rect(g, 50, 0, 51, 20);
+  fill_rect(g, 50, 45, 51, 63);
+  fill_rect(g, 55, 46, 62, 53);  // the chair: a ring
+  fill_rect(g, 56, 47, 61, 52, 0);
+  TopologyOptions o;
+  o.furniture_line_area = 0.0;
+  const TopologicalMap off = build_topological_map(g, o);
+  EXPECT_EQ(off.regions.size(), 1U);
+  EXPECT_EQ(off.openings_past_furniture, 0U);
+  EXPECT_EQ(off.region_of(Cell{20, 30}), off.region_of(Cell{90, 30}));
+  o.furniture_line_area = 0.25;
+  const TopologicalMap on = build_topological_map(g, o);
+  EXPECT_EQ(on.openings_past_furniture, 1U);
+  ASSERT_EQ(on.regions.size(), 2U);
+  EXPECT_NE(on.region_of(Cell{20, 30}), on.region_of(Cell{90, 30}));
+  int doors = 0;
+  for (const auto& cp : on.critical_points) {
+    if (!cp.wall_gap) continue;
+    ++doors;
+    EXPECT_TRUE(cp.separates);
+    for (const Cell c : cp.line) {  // across the door, on the wall's line
+      EXPECT_GE(c.x, 50);
+      EXPECT_LE(c.x, 51);
+    }
+  }
+  EXPECT_EQ(doors, 1);
+  // A chair of more than the area is not furniture: its line hides the opening again.
+  o.furniture_line_area = 0.02;
+  EXPECT_EQ(build_topological_map(g, o).regions.size(), 1U);
+}
+
+TEST(TopologicalMap, PassageIntoAJunctionOfNarrowerBranchesIsCutAtItsMouth) {
+  // A 2 m corridor C (0.05 m cells, x = 111..150) runs from room A (north) down into a 1.6 m
+  // link L (y = 30..61) that leads west into hall H and east through a 0.9 m door into room B
+  // (issue #15, lab_ipa: the diagonal corridor's foot on the link between the hall and the lab).
+  // The corridor opens into A (a critical line there), but at its foot the clearance only rises
+  // a little into the T junction, whose other branches (the link, the door) are narrower: no
+  // narrowing, so C and L were one region. With passage_junctions C is cut at its mouth, on
+  // the line of the link's north wall.
+  BinaryGrid g(GridGeometry{240, 230, 0.05, {}}, 1);
+  fill_rect(g, 5, 5, 95, 80, 0);       // hall H
+  fill_rect(g, 96, 30, 150, 61, 0);    // link L
+  fill_rect(g, 111, 62, 150, 140, 0);  // corridor C
+  fill_rect(g, 156, 5, 235, 100, 0);   // room B
+  fill_rect(g, 151, 44, 155, 61, 0);   // door L -> B
+  fill_rect(g, 90, 141, 200, 225, 0);  // room A
+  const Cell h{30, 40}, l{130, 45}, c{130, 100}, a{150, 180}, b{200, 50};
+  TopologyOptions o;
+  o.passage_junctions = false;
+  const TopologicalMap off = build_topological_map(g, o);
+  EXPECT_EQ(off.regions.size(), 4U);
+  EXPECT_EQ(off.region_of(l), off.region_of(c));
+  o.passage_junctions = true;
+  const TopologicalMap on = build_topological_map(g, o);
+  ASSERT_EQ(on.regions.size(), 5U);
+  const std::set<int> ids{on.region_of(h), on.region_of(l), on.region_of(c), on.region_of(a),
+                          on.region_of(b)};
+  EXPECT_EQ(ids.size(), 5U);
+  int mouths = 0;
+  for (const auto& cp : on.critical_points) {
+    if (!cp.passage_junction) continue;
+    ++mouths;
+    EXPECT_TRUE(cp.separates);
+    // From the corridor's west corner to its east wall's end, on the link's north wall line.
+    for (const Cell q : cp.basis)
+      EXPECT_EQ(q.y, 62) << q;
+    EXPECT_EQ(std::min(cp.basis[0].x, cp.basis[1].x), 110);
+    EXPECT_EQ(std::max(cp.basis[0].x, cp.basis[1].x), 151);
+  }
+  EXPECT_EQ(mouths, 1);
+}
+
 }  // namespace
 }  // namespace voronav::topology
