@@ -270,7 +270,11 @@ void bind_field(py::module_& m) {
       .def_readwrite("wall_openings", &topology::TopologyOptions::wall_openings,
                      "openings in wall lines closed by critical lines")
       .def_readwrite("wall_openings_first", &topology::TopologyOptions::wall_openings_first)
-      .def_readwrite("basis_across", &topology::TopologyOptions::basis_across);
+      .def_readwrite("basis_across", &topology::TopologyOptions::basis_across)
+      .def_readwrite("passage_junctions", &topology::TopologyOptions::passage_junctions,
+                     "a passage running into a junction of narrower branches is cut there")
+      .def_readwrite("furniture_line_area", &topology::TopologyOptions::furniture_line_area,
+                     "[m^2], 0 = off; a line to a smaller obstacle piece hides no wall opening");
   py::class_<topology::CriticalPoint>(tp, "CriticalPoint")
       .def_property_readonly("cell",
                              [](const topology::CriticalPoint& c) { return cell_tuple(c.cell); })

@@ -23,10 +23,10 @@
 //    (CriticalPoint::wall_gap), unless a narrowing's line is next to it. basis_across (off): a
 //    point whose two sites lie on one wall (a notch's jambs at a corridor's mouth) takes the
 //    obstacle across it as its second basis point, so that its line crosses the narrowing.
-//    passage_junctions (off; stop 24): a passage that rises at one end and runs into a junction
+//    passage_junctions (on; stop 24): a passage that rises at one end and runs into a junction
 //    of narrower branches at the other (a corridor's foot on a link, beside a door) is cut at
 //    that mouth too (CriticalPoint::passage_junction; not dropped by the room test).
-//    furniture_line_area (off; stop 24): a narrowing's line ending on a small obstacle piece (a
+//    furniture_line_area (0.25 m^2; stop 24): a narrowing's line ending on a small obstacle piece (a
 //    chair beside a door's jamb) no longer hides the door's wall-line opening.
 //  - critical line: the Bresenham segment between the two basis points.
 //  - regions: the free cells cut by the critical lines, 4-connected components; the cells of the
@@ -88,8 +88,9 @@ struct TopologyOptions {
   /// A passage (as above) that opens at one end and whose other end runs, without opening, into
   /// a junction where every other branch narrows below the passage's band (a door, a narrower
   /// corridor: the passage does not go on) is cut at that end too, at its last cell within the
-  /// band before the junction; the room test does not drop such a line. Off.
-  bool passage_junctions = false;
+  /// band before the junction; the room test does not drop such a line. On since stop 24 (the
+  /// lab_ipa plans' corridor foot; no floor plan lower, docs/reproductions/topology.md).
+  bool passage_junctions = true;
   /// Obstacle components (8-connected) smaller than this [m^2] are free-standing furniture; a
   /// critical point with a basis point on one is not a door and is dropped; 0 = off.
   double min_wall_area = 0.0;
@@ -118,8 +119,9 @@ struct TopologyOptions {
   /// A narrowing's line with a basis point on an obstacle piece (8-connected) smaller than this
   /// [m^2] (a chair, a bin, a pillar) does not hide a wall-line opening next to it (the rule
   /// above): a line from a door's jamb to a chair standing beside it does not close the door,
-  /// so the door's wall-line opening is kept; 0 = off (every narrowing's line hides one).
-  double furniture_line_area = 0.0;
+  /// so the door's wall-line opening is kept; 0 = off (every narrowing's line hides one). 0.25
+  /// since stop 24 (the furnished lab door; no floor plan lower).
+  double furniture_line_area = 0.25;
   /// A critical point whose two nearest sites lie on one wall (the neighbourhood's farthest site
   /// closer to the first than 1.5 x the clearance, at a corner or a corridor's mouth) gets as its
   /// second basis point the obstacle across it, on the ray from the first through the point, so
