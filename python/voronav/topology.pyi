@@ -39,6 +39,8 @@ class TopologyOptions:
     wall_openings: WallOpeningOptions
     wall_openings_first: bool
     basis_across: bool  # second basis point across the point (off)
+    passage_junctions: bool  # a passage into a junction of narrower branches is cut there (on)
+    furniture_line_area: float  # [m^2], 0 = off; a line to a smaller piece hides no opening
     def __init__(self, **kwargs: object) -> None: ...
 
 class CriticalPoint:
