@@ -746,13 +746,17 @@ void RobotAgent::check_source_route() {
 }
 
 /// Source, when no Repair answered in time: A* on its own map to the first route point past the
-/// break that it can plan to, then the rest of the route.
+/// break that it can plan to, then the rest of the route. On a planned walk back onto the route
+/// (it drives waypoints before route_[1]) with repair_walk_keep_target, the walk is what is
+/// blocked, not the route: it first plans again to route_[1], the walk's own target.
 bool RobotAgent::replan_to_route() {
   auto& s = r_;
   const std::size_t next = next_route_index();
-  for (std::size_t i = std::max<std::size_t>(next, 1) + 1; i < route_.size(); ++i) {
+  const bool keep = opt().repair_walk_keep_target && s.wp < back_steps_;
+  for (std::size_t i = std::max<std::size_t>(next, 1) + (keep ? 0 : 1); i < route_.size(); ++i) {
     if (!plan_walk(route_[i].position)) continue;
     ++report_.replans;
+    if (keep && i == 1) ++report_.repair_walk_targets_kept;
     route_.erase(route_.begin() + 1, route_.begin() + static_cast<std::ptrdiff_t>(i));
     route_[0] = VoronoiPoint{s.pos, 1.0f, 0.0f};
     drive_walk_then_route();

@@ -191,6 +191,15 @@ struct NetSimOptions {
   /// the same figures as without it; s4r11 still makes 127 replans (reproductions/networked.md,
   /// stop 22).
   bool repair_fix_seen_only = false;
+  /// Decentralized, not in the paper (issue #13, stop 24): when the source's planned walk back
+  /// onto its route (after a repair timeout's replan, or a refused answer it repaired by A*,
+  /// repair_fix_answer) is blocked by walls it has just seen, it plans again to the same route
+  /// point, the walk's target, before any point after it. Without it every blocked walk drops
+  /// that point: the A* counts unknown cells free, the source sees a new wall every step or two,
+  /// and in s4r11 with repair_fix_answer it dropped the 17 points of the repaired answer in 9 s
+  /// and walked through unknown space toward the destination 35 m away (127 replans, no
+  /// arrival). Counted in repair_walk_targets_kept (docs/reproductions/networked.md, stop 24).
+  bool repair_walk_keep_target = false;
   /// Decentralized, not in the paper: the source re-sends its Repair (repair_resend_s) only when
   /// a robot is in radio range that was not at any earlier send: a robot that had it ignores it
   /// (Table 4 line 1), so a re-send to the same neighbours only adds traffic (s4r6: 36 of 43
