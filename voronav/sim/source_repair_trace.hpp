@@ -21,7 +21,7 @@ struct SourceRepairTrace {
   int repair_rings_expanded = 0;
   /// repair_fix_seen_only: of repair_answers_fixed_walk, the walks kept to space seen free.
   int repair_answers_fixed_seen = 0;
-  /// repair_walk_keep_target: replans of a blocked walk that kept the walk's route point.
+  /// repair_walk_keep_ratio: replans of a blocked walk that kept the walk's route point.
   int repair_walk_targets_kept = 0;
 
   /// Calls f(name, member pointer) for every counter, in output order; the name is the JSON key.
