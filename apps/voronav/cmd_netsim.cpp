@@ -57,6 +57,8 @@ struct NetsimArgs {
   std::optional<int> repair_expand_hops;
   /// --repair-fix-seen-only true|false (NetSimOptions::repair_fix_seen_only).
   std::optional<bool> repair_fix_seen_only;
+  /// --repair-walk-keep-ratio K (NetSimOptions::repair_walk_keep_ratio).
+  std::optional<double> repair_walk_keep_ratio;
 };
 
 /// What to run: `runs` scenarios (paper runs or the one of a file), each with `methods`.
@@ -195,6 +197,7 @@ Plan make_plan(const NetsimArgs& a) {
     if (a.repair_fix_answer) p.options.repair_fix_answer = *a.repair_fix_answer;
     if (a.repair_expand_hops) p.options.repair_expand_hops = *a.repair_expand_hops;
     if (a.repair_fix_seen_only) p.options.repair_fix_seen_only = *a.repair_fix_seen_only;
+    if (a.repair_walk_keep_ratio) p.options.repair_walk_keep_ratio = *a.repair_walk_keep_ratio;
     p.methods = methods_of(a.method);
     return p;
   }
@@ -213,6 +216,7 @@ Plan make_plan(const NetsimArgs& a) {
   if (a.repair_fix_answer) p.options.repair_fix_answer = *a.repair_fix_answer;
   if (a.repair_expand_hops) p.options.repair_expand_hops = *a.repair_expand_hops;
   if (a.repair_fix_seen_only) p.options.repair_fix_seen_only = *a.repair_fix_seen_only;
+  if (a.repair_walk_keep_ratio) p.options.repair_walk_keep_ratio = *a.repair_walk_keep_ratio;
   // The file's method unless --method is given; a file without one runs both.
   p.methods = a.method_given || !file->has_method ? methods_of(a.method)
                                                   : std::vector<sim::Method>{file->options.method};
@@ -230,6 +234,7 @@ void write_scenario(const NetsimArgs& a) {
     if (a.repair_fix_answer) o.repair_fix_answer = *a.repair_fix_answer;
     if (a.repair_expand_hops) o.repair_expand_hops = *a.repair_expand_hops;
     if (a.repair_fix_seen_only) o.repair_fix_seen_only = *a.repair_fix_seen_only;
+    if (a.repair_walk_keep_ratio) o.repair_walk_keep_ratio = *a.repair_walk_keep_ratio;
     if (a.method != "both") o.method = sim::parse_method(a.method);
   } else {
     const Plan p = make_plan(a);
@@ -625,6 +630,13 @@ void setup(CLI::App& app) {
                 "true|false: with --repair-fix-answer, the source's A* repair of a refused answer "
                 "first keeps to space seen free (options key repair_fix_seen_only; overrides a "
                 "scenario file's)");
+  c->add_option("--repair-walk-keep-ratio", args->repair_walk_keep_ratio,
+                ">= 0: with --repair-fix-answer, when the walk onto a refused answer the "
+                "source repaired by A* is blocked, it plans again to the same point of the answer "
+                "while the walk is at most K times the first walk (or the answer's piece), else "
+                "it drops the point (0 = always drop; options key repair_walk_keep_ratio; "
+                "overrides a scenario file's)")
+      ->check(non_negative());
   c->add_option("--write-scenario", args->write_scenario,
                 "write --scenario 1..4 --run K (or the given file) as a scenario file naming "
                 "--method (decentralized for both) and exit")

@@ -210,6 +210,7 @@ void bind_sim(py::module_& m) {
       .def_readwrite("repair_hops", &sm::NetSimOptions::repair_hops)
       .def_readwrite("repair_expand_hops", &sm::NetSimOptions::repair_expand_hops)
       .def_readwrite("repair_fix_seen_only", &sm::NetSimOptions::repair_fix_seen_only)
+      .def_readwrite("repair_walk_keep_ratio", &sm::NetSimOptions::repair_walk_keep_ratio)
       .def_readwrite("collect_s", &sm::NetSimOptions::collect_s)
       .def_readwrite("repair_timeout_s", &sm::NetSimOptions::repair_timeout_s)
       .def_readwrite("seed", &sm::NetSimOptions::seed)

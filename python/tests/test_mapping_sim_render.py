@@ -55,6 +55,7 @@ def test_netsim_run_metrics_dict():
     assert res["route_found_by"] == "relays" and res["route_robots"] == 1
     assert res["repairs_executed"] == 0 and res["changes_applied"] == 0
     assert res["repair_rings_expanded"] == 0 and "repair_answers_fixed_seen" in res
+    assert res["repair_walk_targets_kept"] == 0
     cen = vn.netsim.run(sc, vn.netsim.Options(method="centralized"), time_limit_s=60.0, record=True)
     assert cen["success"] is True and cen["route_found_by"] == "source_alone"
     route = cen["route"]

@@ -33,6 +33,7 @@ class Options:
     repair_hops: int
     repair_expand_hops: int
     repair_fix_seen_only: bool
+    repair_walk_keep_ratio: float
     collect_s: float
     repair_timeout_s: float
     seed: int

@@ -251,6 +251,16 @@ bool RobotAgent::fix_refused_answer(std::vector<VoronoiPoint> rest, RobotId from
     if (seen_only && !opt().repair_fix_seen_only) continue;
     for (std::size_t i = std::max<std::size_t>(to, 1); i < rest.size(); ++i) {
       if (!plan_walk(rest[i].position, seen_only ? &rest : nullptr)) continue;
+      if (opt().repair_walk_keep_ratio > 0.0) {
+        // The walk onto the answer is planned again to this point while it is at most
+        // repair_walk_keep_ratio times this walk or the answer's piece it replaces.
+        double piece = 0.0;
+        for (std::size_t k = 1; k <= i; ++k)
+          piece += distance(rest[k - 1].position, rest[k].position);
+        fix_walk_target_ = rest[i].position;
+        fix_walk_first_m_ = std::max(walk_length(), piece);
+        fix_walk_bound_m_ = opt().repair_walk_keep_ratio * fix_walk_first_m_;
+      }
       route_.assign(1, VoronoiPoint{s.pos, 1.0f, 0.0f});
       route_.insert(route_.end(), rest.begin() + static_cast<std::ptrdiff_t>(i), rest.end());
       drive_walk_then_route();
@@ -745,14 +755,39 @@ void RobotAgent::check_source_route() {
   send_repair(m);
 }
 
+/// Length of the source's planned waypoints from where it stands [m].
+double RobotAgent::walk_length() const {
+  double m = 0.0;
+  Vec2 a = r_.pos;
+  for (Vec2 w : r_.waypoints) {
+    m += distance(a, w);
+    a = w;
+  }
+  return m;
+}
+
 /// Source, when no Repair answered in time: A* on its own map to the first route point past the
-/// break that it can plan to, then the rest of the route.
+/// break that it can plan to, then the rest of the route. On a planned walk back onto the route
+/// (it drives waypoints before route_[1]) the walk is what is blocked, not the route. When that
+/// walk goes to a refused answer the source repaired by A* (fix_refused_answer), with
+/// repair_walk_keep_ratio it first plans again to route_[1], the walk's own target, and keeps
+/// that walk while it is at most that many times the first walk or the answer's piece.
 bool RobotAgent::replan_to_route() {
   auto& s = r_;
   const std::size_t next = next_route_index();
-  for (std::size_t i = std::max<std::size_t>(next, 1) + 1; i < route_.size(); ++i) {
+  const bool keep = fix_walk_bound_m_ >= 0.0 && s.wp < back_steps_ && route_.size() > 1 &&
+                    distance(fix_walk_target_, route_[1].position) < 1e-3;
+  const double bound = fix_walk_bound_m_;
+  fix_walk_bound_m_ = -1.0;  // unless kept below
+  for (std::size_t i = std::max<std::size_t>(next, 1) + (keep ? 0 : 1); i < route_.size(); ++i) {
     if (!plan_walk(route_[i].position)) continue;
+    if (keep && i == 1 && walk_length() > bound)
+      continue;  // too long a way round to the answer: drop the point, as without the option
     ++report_.replans;
+    if (keep && i == 1) {
+      ++report_.repair_walk_targets_kept;
+      fix_walk_bound_m_ = opt().repair_walk_keep_ratio * fix_walk_first_m_;
+    }
     route_.erase(route_.begin() + 1, route_.begin() + static_cast<std::ptrdiff_t>(i));
     route_[0] = VoronoiPoint{s.pos, 1.0f, 0.0f};
     drive_walk_then_route();

@@ -355,5 +355,30 @@ TEST(DecentralizedRepair, ARepairedAnswerKeepsToSpaceSeenFree) {
   EXPECT_GE(seen.repairs_executed, 1);
 }
 
+// repair_walk_keep_ratio (issue #13, stop 24): scenario 4, run 11 (data/netsim/s4_run11_walk.yaml)
+// with repair_fix_answer. The source repairs a refused answer by A* on its own map (unknown cells
+// count free) and drives the walk onto it. Each time walls it has just seen block that walk, it
+// planned again to the next route point and dropped the walk's own: within 9 s the repaired
+// answer's points were gone and it walked through unknown space toward the destination 35 m
+// away; it made 127 replans and did not arrive. With the rule (K = 1000) it plans again
+// to the same point of the answer (a kept target) and arrives.
+TEST(DecentralizedRepair, ABlockedWalkKeepsItsRoutePoint) {
+  auto f = saved_decentralized_run("s4_run11_walk.yaml");
+  f.options.repair_fix_answer = true;
+  f.options.repair_walk_keep_ratio = 0.0;
+  const auto drop = run_netsim(f.scenario, f.options).metrics;
+  EXPECT_GE(drop.repair_answers_fixed_walk, 1) << "a refused answer repaired by A*";
+  EXPECT_FALSE(drop.success) << "the walk dropped the answer's points and the source got lost";
+  EXPECT_EQ(drop.repair_walk_targets_kept, 0);
+
+  NetSimOptions o = f.options;
+  o.repair_walk_keep_ratio = 1000.0;
+  const auto keep = run_netsim(f.scenario, o).metrics;
+  ASSERT_TRUE(keep.success);
+  EXPECT_GE(keep.repair_answers_fixed_walk, 1);
+  EXPECT_GE(keep.repair_walk_targets_kept, 1) << "blocked walks planned again to their point";
+  EXPECT_LT(keep.source_travel_m, drop.source_travel_m);
+}
+
 }  // namespace
 }  // namespace voronav::sim

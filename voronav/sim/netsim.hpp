@@ -191,6 +191,19 @@ struct NetSimOptions {
   /// the same figures as without it; s4r11 still makes 127 replans (reproductions/networked.md,
   /// stop 22).
   bool repair_fix_seen_only = false;
+  /// Decentralized, not in the paper (issue #13, stop 24): with repair_fix_answer, when the walk
+  /// onto a refused answer the source repaired by A* (unknown cells count free) is blocked by
+  /// walls it has just seen, the source plans again to the same point of the answer, as long as
+  /// the new walk is at most this many times the larger of the first walk to it and the answer's
+  /// piece it replaced; beyond that, and with 0, it drops the point and plans to the next route
+  /// point, as every other replan does. Dropping one point per blocked step lost the whole
+  /// repaired answer in s4r11 (17 points in 9 s, then a walk through unknown space toward the
+  /// destination 35 m away; 127 replans, no arrival). Counted in repair_walk_targets_kept.
+  /// Off by default: with repair_fix_answer and 1000 (in effect no bound), Repair executes in 45
+  /// of 48 change runs of s1-s4 (37 with the defaults), with 62 arrivals instead of 59 and less
+  /// source travel in s1, s2 and s4, on the default's change placements and on its own; but s3's
+  /// source drives 0.01 / 0.04 m more (docs/reproductions/networked.md, stop 24).
+  double repair_walk_keep_ratio = 0.0;
   /// Decentralized, not in the paper: the source re-sends its Repair (repair_resend_s) only when
   /// a robot is in radio range that was not at any earlier send: a robot that had it ignores it
   /// (Table 4 line 1), so a re-send to the same neighbours only adds traffic (s4r6: 36 of 43

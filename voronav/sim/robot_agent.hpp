@@ -288,6 +288,7 @@ class RobotAgent {
   bool expand_repair_ring();
   void send_repair(const network::RepairMessage& m);
   void drive_walk_then_route();
+  [[nodiscard]] double walk_length() const;
   void check_source_route();
   bool replan_to_route();
   [[nodiscard]] std::uint32_t next_repair_num();
@@ -318,6 +319,12 @@ class RobotAgent {
   std::size_t route_base_ = 0;
   std::vector<Vec2> trail_;     // source positions since its latest Search
   std::size_t back_steps_ = 0;  // waypoints of the way back along the trail
+  // repair_walk_keep_ratio: the point of a repaired answer the source's walk goes to
+  // (fix_refused_answer), the larger of the first walk to it and the answer's piece it replaced
+  // [m], and the longest walk to it that is kept (-1: no such walk under way).
+  Vec2 fix_walk_target_{};
+  double fix_walk_first_m_ = -1.0;
+  double fix_walk_bound_m_ = -1.0;
   double blocked_since_ = -1.0;
   Vec2 walk_prev;  // position before this step's move
   // Source walking toward the destination because no radio neighbour could take its Search on:

@@ -198,6 +198,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
            "repair_share_met_blocks",
            "repair_fix_answer",
            "repair_fix_seen_only",
+           "repair_walk_keep_ratio",
            "repair_resend_new_only",
            "repair_check_seen",
            "path_fallback_after_retries",
@@ -245,6 +246,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   pos("repair_timeout_s", o.repair_timeout_s);
   nonneg("repair_resend_s", o.repair_resend_s);
   nonneg("repair_rejoin_m", o.repair_rejoin_m);
+  nonneg("repair_walk_keep_ratio", o.repair_walk_keep_ratio);
   nonneg("search_timeout_per_m", o.search_timeout_per_m);
   nonneg("search_activity_s", o.search_activity_s);
   auto flag = [&](const char* key, bool& v) {
@@ -507,6 +509,7 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
       << "  repair_share_met_blocks: " << (o.repair_share_met_blocks ? "true" : "false") << "\n"
       << "  repair_fix_answer: " << (o.repair_fix_answer ? "true" : "false") << "\n"
       << "  repair_fix_seen_only: " << (o.repair_fix_seen_only ? "true" : "false") << "\n"
+      << "  repair_walk_keep_ratio: " << fmt(o.repair_walk_keep_ratio) << "\n"
       << "  repair_resend_new_only: " << (o.repair_resend_new_only ? "true" : "false") << "\n"
       << "  repair_check_seen: " << (o.repair_check_seen ? "true" : "false") << "\n"
       << "  path_fallback_after_retries: " << (o.path_fallback_after_retries ? "true" : "false")

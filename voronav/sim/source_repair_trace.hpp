@@ -21,6 +21,8 @@ struct SourceRepairTrace {
   int repair_rings_expanded = 0;
   /// repair_fix_seen_only: of repair_answers_fixed_walk, the walks kept to space seen free.
   int repair_answers_fixed_seen = 0;
+  /// repair_walk_keep_ratio: replans of a blocked walk that kept the walk's route point.
+  int repair_walk_targets_kept = 0;
 
   /// Calls f(name, member pointer) for every counter, in output order; the name is the JSON key.
   template <class F>
@@ -35,6 +37,7 @@ struct SourceRepairTrace {
     f("repair_answers_fixed_walk", &T::repair_answers_fixed_walk);
     f("repair_rings_expanded", &T::repair_rings_expanded);
     f("repair_answers_fixed_seen", &T::repair_answers_fixed_seen);
+    f("repair_walk_targets_kept", &T::repair_walk_targets_kept);
   }
 };
 
