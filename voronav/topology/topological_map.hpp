@@ -26,8 +26,8 @@
 //    passage_junctions (on; stop 24): a passage that rises at one end and runs into a junction
 //    of narrower branches at the other (a corridor's foot on a link, beside a door) is cut at
 //    that mouth too (CriticalPoint::passage_junction; not dropped by the room test).
-//    furniture_line_area (0.25 m^2; stop 24): a narrowing's line ending on a small obstacle piece (a
-//    chair beside a door's jamb) no longer hides the door's wall-line opening.
+//    furniture_line_area (0.25 m^2; stop 24): a narrowing's line ending on a small obstacle piece
+//    (a chair beside a door's jamb) no longer hides the door's wall-line opening.
 //  - critical line: the Bresenham segment between the two basis points.
 //  - regions: the free cells cut by the critical lines, 4-connected components; the cells of the
 //    lines join the smallest adjacent region. Merge rule: a region smaller than min_region_area
