@@ -27,6 +27,7 @@ double information_gain(const OccupancyGrid& map, Vec2 p, double radius, bool th
     return static_cast<double>(unknown) / all;
   }
   // A 4-connected flood from p's cell over the disc's cells that are on the map and not occupied.
+  if (!map.contains(*c)) return 0.0;  // no walk starts off the map
   const int side = 2 * r + 1;
   std::vector<char> seen(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);
   const auto slot = [&](Cell n) {

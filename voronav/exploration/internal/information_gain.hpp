@@ -12,7 +12,8 @@
 
 namespace voronav::exploration::internal {
 
-/// Unknown cells within `radius` [m] of p over all cells within it (0 when p is off the map).
+/// Unknown cells within `radius` [m] of p over all cells within it (0 when p is off the map
+/// with `through_free`, or not a finite point).
 /// Cells off the map count as unknown unless `through_free`; with `through_free` only the
 /// unknown cells reached from p's cell by a 4-connected walk inside the disc over cells of the map
 /// that are not occupied (value < 50) count.
