@@ -40,15 +40,18 @@ void TeamRun::skip_known_leaves(Agent& a, double t) {
   }
   if (!skipped) return;
   const BinaryGrid opt = tree_grid(tg, plan_radius);
-  while (!a.legs.empty()) {
-    const Vec2 leaf = a.legs.front().back();
-    std::vector<Vec2> path = path_on(opt, a.body.true_pose().position, leaf);
-    if (path.size() >= 2 && distance(path.back(), leaf) <= 0.5) {
-      a.legs.front() = std::move(path);
-      return;
-    }
+  while (!a.legs.empty() && !leg_from_here(a, opt))
     a.legs.pop_front();
-  }
+}
+
+// The robot's next leg planned afresh on `opt` from where it stands to the same leaf (within
+// 0.5 m of it); false, leg unchanged, when the leaf is out of reach from here.
+bool TeamRun::leg_from_here(Agent& a, const BinaryGrid& opt) {
+  const Vec2 leaf = a.legs.front().back();
+  std::vector<Vec2> path = path_on(opt, a.body.true_pose().position, leaf);
+  if (path.size() < 2 || distance(path.back(), leaf) > 0.5) return false;
+  a.legs.front() = std::move(path);
+  return true;
 }
 
 void TeamRun::finish_leg(Agent& a, double t) {

@@ -55,11 +55,7 @@ void TeamRun::end_unstick(Agent& a, double t) {
   a.route.clear();
   a.mode = AgentMode::kReactive;
   if (a.legs.empty()) return;
-  const BinaryGrid opt = tree_grid(team_grid(team), plan_radius);
-  std::vector<Vec2> path = path_on(opt, a.body.true_pose().position, a.legs.front().back());
-  if (path.size() >= 2 && distance(path.back(), a.legs.front().back()) <= 0.5)
-    a.legs.front() = std::move(path);
-  else
+  if (!leg_from_here(a, tree_grid(team_grid(team), plan_radius)))
     a.legs.pop_front();  // the leaf is out of reach from here: give it up
   start_leg(a, t);
 }

@@ -78,6 +78,7 @@ class TeamRun {
   // --- team_run_tree.cpp ---
   void start_leg(Agent& a, double t);
   void skip_known_leaves(Agent& a, double t);
+  bool leg_from_here(Agent& a, const BinaryGrid& opt);
   void finish_leg(Agent& a, double t);
   void record_dispatch(double t, std::size_t i, bool first, Vec2 root,
                        const std::vector<Vec2>& leaves);
