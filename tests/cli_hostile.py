@@ -1,13 +1,19 @@
 #!/usr/bin/env python3
 """Hostile input against the real CLI (issue 17): every case must end with the expected exit code
-within a time limit, with a message naming the file (and line/key) or the option, and (release
+within a CPU-time limit, with a message naming the file (and line/key) or the option, and (release
 builds) under a memory limit. Usage: cli_hostile.py BIN ROOT [CASE_REGEX].
 
 Each case: the files it needs (made here, small), the command, the exit code, fragments that
 stderr (or stdout) must contain, fragments it must not. Peak RSS is measured per run (wait4) and
 must stay under 200 MB; an address-space limit of 1 GiB is set too. Both are skipped under
 AddressSanitizer (its shadow memory needs terabytes of address space), where the time limit is
-also 5x longer."""
+also 5x longer.
+
+The limit is on the CPU time the run used (wait4's user + system time; RLIMIT_CPU kills a run
+that spins past it), not on wall time: on a shared 2-core machine under `ctest -j2` a case that
+needs 0.1 s of CPU can wait seconds for a core, and a wall-clock limit then fails a correct build.
+A run that blocks without using CPU (a read that never returns) is caught by a wall-clock
+backstop of WALL_LIMIT seconds."""
 import os
 import re
 import resource
@@ -25,32 +31,39 @@ BIN, ROOT = sys.argv[1], sys.argv[2]
 ONLY = re.compile(sys.argv[3]) if len(sys.argv) > 3 else None
 ASAN = b"libasan" in subprocess.run(["ldd", BIN], capture_output=True).stdout or \
     "ASAN_OPTIONS" in os.environ
-TIME_LIMIT = 2.0 * (5 if ASAN else 1)
+TIME_LIMIT = 2.0 * (5 if ASAN else 1)  # CPU seconds per case
+WALL_LIMIT = 60.0 * (5 if ASAN else 1)  # hang backstop
 RSS_LIMIT_MB = 200
 AS_LIMIT = 1 << 30
 
 
-def limit_memory():
-    if not ASAN:
-        resource.setrlimit(resource.RLIMIT_AS, (AS_LIMIT, AS_LIMIT))
+def limits(cpu_seconds):
+    def apply():
+        if not ASAN:
+            resource.setrlimit(resource.RLIMIT_AS, (AS_LIMIT, AS_LIMIT))
+        soft = int(cpu_seconds) + 2  # whole seconds; SIGXCPU ends a spinning run soon after
+        resource.setrlimit(resource.RLIMIT_CPU, (soft, soft + 1))
+    return apply
 
 
-def run(args, cwd, timeout=TIME_LIMIT, env=None):
-    """(exit code, stdout, stderr, seconds, peak RSS MB); exit code None when killed on timeout."""
+def run(args, cwd, cpu_limit=TIME_LIMIT, env=None):
+    """(exit code, stdout, stderr, CPU seconds, peak RSS MB); exit code None when the run was
+    killed at the wall-clock backstop or by RLIMIT_CPU."""
     out_f, err_f = tempfile.TemporaryFile(), tempfile.TemporaryFile()
-    t0 = time.monotonic()
     p = subprocess.Popen([BIN, *args], cwd=cwd, stdout=out_f, stderr=err_f,
-                         stdin=subprocess.DEVNULL, preexec_fn=limit_memory, env=env)
+                         stdin=subprocess.DEVNULL, preexec_fn=limits(cpu_limit), env=env)
     timed_out = []
-    timer = threading.Timer(timeout, lambda: (timed_out.append(1), p.kill()))
+    timer = threading.Timer(WALL_LIMIT, lambda: (timed_out.append(1), p.kill()))
     timer.start()
     _, status, usage = os.wait4(p.pid, 0)
     timer.cancel()
     p.returncode = 0
-    secs = time.monotonic() - t0
+    secs = usage.ru_utime + usage.ru_stime
     out_f.seek(0)
     err_f.seek(0)
-    code = None if timed_out else (os.waitstatus_to_exitcode(status))
+    killed_by_cpu = os.WIFSIGNALED(status) and os.WTERMSIG(status) in (signal.SIGXCPU,
+                                                                       signal.SIGKILL)
+    code = None if timed_out or killed_by_cpu else os.waitstatus_to_exitcode(status)
     return (code, out_f.read().decode(errors="replace"), err_f.read().decode(errors="replace"),
             secs, usage.ru_maxrss / 1024.0)
 
@@ -243,11 +256,13 @@ def main():
             before = set(os.listdir(d))
             argv = [a.replace("{d}", d) for a in args]
             limit = TIME_LIMIT * SLOW.get(name, 1)
-            code, out, err, secs, rss = run(argv, d, timeout=limit)
+            code, out, err, secs, rss = run(argv, d, cpu_limit=limit)
             text = err + out
             problems = []
             if code is None:
-                problems.append(f"no exit within {limit:g} s")
+                problems.append(f"killed: no exit within {WALL_LIMIT:g} s wall or CPU limit")
+            elif secs > limit:
+                problems.append(f"used {secs:.2f} s CPU, limit {limit:g} s")
             elif code != expect:
                 problems.append(f"exit {code}, expected {expect}")
             problems += [f"missing '{m}'" for m in must if m not in text]
@@ -259,7 +274,7 @@ def main():
                 if extra:
                     problems.append(f"wrote {sorted(extra)} although the input was refused")
             status = "ok" if not problems else "FAIL"
-            print(f"{status} {name}: exit {code}, {secs:.2f} s, {rss:.0f} MB")
+            print(f"{status} {name}: exit {code}, {secs:.2f} s CPU, {rss:.0f} MB")
             if problems:
                 failures.append(f"{name}: voronav {' '.join(argv)}\n  " + "; ".join(problems) +
                                 f"\n  output: {text[:600]}")
