@@ -38,9 +38,9 @@ struct ExploreArgs {
   std::string share_bans = "off";
   int crowd_limit = 0;
   std::string drop_goalless_routes = "off";
-  std::string margin_escape = "off";
+  std::string margin_escape = "on";
   std::string skip_known_leaves = "off";
-  std::string gain_through_free = "off";
+  std::string gain_through_free = "on";
   std::string guard = "corridor";
   std::uint64_t seed = 1;
   std::string start;

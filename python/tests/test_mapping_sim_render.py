@@ -109,7 +109,8 @@ def test_explore_options_match_the_cli(cli):
     o.unstick = False
     o.guard = "cone"
     o.skip_known_leaves = True
-    o.gain_through_free = True
+    o.gain_through_free = False
+    o.margin_escape = False
     o.controller.random_turn_rate = 0.3  # in place: the field is the options' own member
     o.controller.avoid_escape = "spin"
     assert o.controller.random_turn_rate == pytest.approx(0.3)
@@ -118,7 +119,7 @@ def test_explore_options_match_the_cli(cli):
               "--tree-start", "20", "--tree-replan", "robots", "--tree-leg-replan", "none",
               "--unstick", "off", "--random-turn-rate", "0.3", "--avoid-escape", "spin",
               "--guard", "cone", "--skip-known-leaves", "on",
-              "--gain-through-free", "on")
+              "--gain-through-free", "off", "--margin-escape", "off")
     for key in ("coverage", "distance_m", "feature_points", "leaves", "dispatches", "escapes",
                 "unsticks", "collisions", "guard_wall_stops", "guard_robot_stops", "leaves_skipped"):
         assert res[key] == pytest.approx(got[key], rel=1e-5), key

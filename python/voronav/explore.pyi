@@ -87,9 +87,9 @@ class Options:
     share_bans: bool  # frontier methods: a reached goal no robot can observe is banned for all
     crowd_limit: int  # frontier: skip a frontier N other robots are at or heading to (0 = off)
     drop_goalless_routes: bool  # frontier methods
-    margin_escape: bool  # every method: a watchdog-stuck robot in the planning margin drives out first
+    margin_escape: bool  # every method: a watchdog-stuck robot in the planning margin drives out first (on)
     skip_known_leaves: bool  # tree: skip dispatched leaves the team map already knows (off)
-    gain_through_free: bool  # a target's gain counts only unknown cells it connects to (off)
+    gain_through_free: bool  # a target's gain counts only unknown cells it connects to (on)
     guard: FrontGuard  # front guard: cone | corridor (default)
     controller: ControllerOptions  # tree's reactive search
     frontier_controller: ControllerOptions  # frontier methods' reactive windows

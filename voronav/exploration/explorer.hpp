@@ -112,8 +112,10 @@ struct ExplorationOptions {
   /// that connect to it through cells not known to be occupied (internal/information_gain.hpp).
   /// Without it the unknown hollows of closed obstacles count: on depot (tree-frontier, seed 14)
   /// leaves beside the shelves kept a gain above min_leaf_gain and the robots chased them for
-  /// 300 s at 84 % coverage while the far side of the depot stayed unexplored.
-  bool gain_through_free = false;
+  /// 300 s at 84 % coverage while the far side of the depot stayed unexplored. On by default
+  /// since stop 25 (tree-frontier's t90 under the coordinated frontier's on paper and depot, 16
+  /// seeds; docs/reproductions/exploration.md, "Issue 14, stop 25").
+  bool gain_through_free = true;
   /// A robot is stalled when it stays within stall_distance [m] of one spot for stall_time [s]
   /// while reachable unknown space remains (coverage < 0.99).
   double stall_time = 60.0;
@@ -182,7 +184,10 @@ struct ExplorationOptions {
   /// position, so from inside the margin the first leg can clip a wall corner: traced on willow (16
   /// robots, coordinated, seed 5), a robot 0.14 m from a corner was given new routes from that spot
   /// for 600 s, every one stopped by the front guard (stalled). `margin_escapes` counts them.
-  bool margin_escape = false;
+  /// On by default since stop 25: with gain_through_free it leaves no stalled robot in 16 willow
+  /// runs of tree-frontier (16 robots) and lowers the stalls of the other methods (stop 23);
+  /// docs/reproductions/exploration.md, "Issue 14, stop 25".
+  bool margin_escape = true;
   /// Ours (issue 14, stop 24), kTree only: a robot about to drive a tree leg (at the dispatch and
   /// after each leaf) skips the leaves whose surroundings the team map already knows (less than
   /// min_leaf_gain of the cells within gain_radius unknown), and a leg whose leaf becomes known

@@ -25,6 +25,7 @@ TEST(RetryBanned, GoallessRobotsTakeTheirBlockedGoalsAgainOnDepot) {
   o.seed = 3;
   o.stop_at_coverage = 0.995;
   o.guard = FrontGuard::kCone;  // the guard of the traced run
+  o.margin_escape = false;      // the traced run had no margin escape (default since stop 25)
   const ExplorationResult on = run_exploration(depot, o);
   EXPECT_GT(on.ban_resets, 0);
   EXPECT_GE(on.coverage, 0.99);
@@ -33,6 +34,14 @@ TEST(RetryBanned, GoallessRobotsTakeTheirBlockedGoalsAgainOnDepot) {
   const ExplorationResult off = run_exploration(depot, o);
   EXPECT_EQ(off.ban_resets, 0);
   EXPECT_LT(off.coverage, 0.75);
+  // Stop 25: the blocked robots stood inside the planning margin of that clutter; the margin
+  // escape drives them out of it, so no goal is banned for good even without retry_banned.
+  o.margin_escape = true;
+  const ExplorationResult escape = run_exploration(depot, o);
+  EXPECT_GT(escape.margin_escapes, 0);
+  EXPECT_GE(escape.coverage, 0.99);
+  EXPECT_EQ(escape.stalled_robots, 0);
+  o.margin_escape = false;
   // Stop 21: the corridor guard does not stop the robots at that clutter; no goal is banned
   // for good, even without retry_banned.
   o.guard = FrontGuard::kCorridor;
