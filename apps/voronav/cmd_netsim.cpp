@@ -61,6 +61,15 @@ struct NetsimArgs {
   std::optional<double> repair_walk_keep_ratio;
 };
 
+/// The --repair-* options that were given, written over `o` (the defaults or a scenario file's);
+/// the one place every run plan and --write-scenario takes them from.
+void apply_repair_overrides(const NetsimArgs& a, sim::NetSimOptions& o) {
+  if (a.repair_fix_answer) o.repair_fix_answer = *a.repair_fix_answer;
+  if (a.repair_expand_hops) o.repair_expand_hops = *a.repair_expand_hops;
+  if (a.repair_fix_seen_only) o.repair_fix_seen_only = *a.repair_fix_seen_only;
+  if (a.repair_walk_keep_ratio) o.repair_walk_keep_ratio = *a.repair_walk_keep_ratio;
+}
+
 /// What to run: `runs` scenarios (paper runs or the one of a file), each with `methods`.
 struct Plan {
   std::string label;  ///< "scenario1".."scenario4" or the file's stem (output file names)
@@ -194,10 +203,7 @@ Plan make_plan(const NetsimArgs& a) {
     p.scenario = [id, seed = a.seed](int run) { return sim::make_paper_run(id, run, seed); };
     p.options.seed = a.seed;
     p.options.radio.loss = a.loss;
-    if (a.repair_fix_answer) p.options.repair_fix_answer = *a.repair_fix_answer;
-    if (a.repair_expand_hops) p.options.repair_expand_hops = *a.repair_expand_hops;
-    if (a.repair_fix_seen_only) p.options.repair_fix_seen_only = *a.repair_fix_seen_only;
-    if (a.repair_walk_keep_ratio) p.options.repair_walk_keep_ratio = *a.repair_walk_keep_ratio;
+    apply_repair_overrides(a, p.options);
     p.methods = methods_of(a.method);
     return p;
   }
@@ -213,10 +219,7 @@ Plan make_plan(const NetsimArgs& a) {
   p.options = file->options;
   if (a.seed_given) p.options.seed = a.seed;
   if (a.loss_given) p.options.radio.loss = a.loss;
-  if (a.repair_fix_answer) p.options.repair_fix_answer = *a.repair_fix_answer;
-  if (a.repair_expand_hops) p.options.repair_expand_hops = *a.repair_expand_hops;
-  if (a.repair_fix_seen_only) p.options.repair_fix_seen_only = *a.repair_fix_seen_only;
-  if (a.repair_walk_keep_ratio) p.options.repair_walk_keep_ratio = *a.repair_walk_keep_ratio;
+  apply_repair_overrides(a, p.options);
   // The file's method unless --method is given; a file without one runs both.
   p.methods = a.method_given || !file->has_method ? methods_of(a.method)
                                                   : std::vector<sim::Method>{file->options.method};
@@ -231,10 +234,7 @@ void write_scenario(const NetsimArgs& a) {
     sc = sim::make_paper_run(id, a.run, a.seed);
     o.seed = a.seed;
     o.radio.loss = a.loss;
-    if (a.repair_fix_answer) o.repair_fix_answer = *a.repair_fix_answer;
-    if (a.repair_expand_hops) o.repair_expand_hops = *a.repair_expand_hops;
-    if (a.repair_fix_seen_only) o.repair_fix_seen_only = *a.repair_fix_seen_only;
-    if (a.repair_walk_keep_ratio) o.repair_walk_keep_ratio = *a.repair_walk_keep_ratio;
+    apply_repair_overrides(a, o);
     if (a.method != "both") o.method = sim::parse_method(a.method);
   } else {
     const Plan p = make_plan(a);

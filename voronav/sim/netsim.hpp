@@ -179,9 +179,9 @@ struct NetSimOptions {
   /// way). Counted as a Repair executed and apart in repair_answers_fixed /
   /// repair_answers_fixed_walk. Off by default: on the change placements of the default
   /// (off) it executes Repair in 45 of 48 change runs instead of 37 with 60 arrivals instead of
-  /// 59, but on the placements that make_paper_run chooses with it on, s4 arrives in 12 runs
-  /// instead of 13 and s2's source drives 153.4 m instead of 137.3 m
-  /// (docs/reproductions/networked.md, stop 21).
+  /// 59, but on the placements that make_paper_run chose with it on (until stop 25; they no
+  /// longer depend on it), s4 arrives in 12 runs instead of 13 and s2's source drives 153.4 m
+  /// instead of 137.3 m (docs/reproductions/networked.md, stop 21).
   bool repair_fix_answer = false;
   /// Decentralized, not in the paper (issue #13, stop 22): with repair_fix_answer, the A* that
   /// repairs a refused answer first keeps to space someone sensed free (cells the source knows
@@ -202,7 +202,11 @@ struct NetSimOptions {
   /// Off by default: with repair_fix_answer and 1000 (in effect no bound), Repair executes in 45
   /// of 48 change runs of s1-s4 (37 with the defaults), with 62 arrivals instead of 59 and less
   /// source travel in s1, s2 and s4, on the default's change placements and on its own; but s3's
-  /// source drives 0.01 / 0.04 m more (docs/reproductions/networked.md, stop 24).
+  /// source drives 0.01 / 0.04 m more (docs/reproductions/networked.md, stop 24). And with both
+  /// on, the source often arrives before Table 7's later changes happen: in s1 it meets 14 of
+  /// the 22 change entries (6 runs of 9-16 meet only their first change), so the change runs no
+  /// longer test what Table 7 asks (stop 25). make_paper_run places the changes with both off
+  /// whatever their defaults (scenarios.cpp probe_options).
   double repair_walk_keep_ratio = 0.0;
   /// Decentralized, not in the paper: the source re-sends its Repair (repair_resend_s) only when
   /// a robot is in radio range that was not at any earlier send: a robot that had it ignores it

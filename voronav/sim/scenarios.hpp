@@ -3,7 +3,8 @@
 // obstacle changes)), built on generated office worlds. Half of the robots stand on the Voronoi
 // diagram of the map, half at random free places; robot 0 is the source; the destination is a far
 // reachable free place. Obstacle changes close doors (or put down boxes) on the routes in use,
-// ahead of the sources, keeping the destination reachable. Also the scale worlds (100 / 1000 robots).
+// ahead of the sources, keeping the destination reachable. Also the scale worlds (100 / 1000
+// robots).
 #pragma once
 
 #include <cstdint>
@@ -56,10 +57,11 @@ struct PlacementOptions {
 /// one for both. Where the two routes share no such place, the change is a pair of entries: a
 /// door (else a box) on each method's route, each when its source is 1.5-3 m before it, both at
 /// the same times (at_s only) and places for both methods, so each method meets one of them on
-/// its route. Change k is timed on runs (default options) with changes 1..k-1 and kept only when
-/// a run of each method with it applies every change and meets it (one entry of a pair) on the
-/// route ahead. Fewer changes when no candidate passes (the run records it). So sc.changes has
-/// one entry per change, two per pair.
+/// its route. Change k is timed on runs (default options, with the Repair options beyond the
+/// paper pinned off whatever their defaults: scenarios.cpp probe_options) with changes 1..k-1
+/// and kept only when a run of each method with it applies every change and meets it (one entry
+/// of a pair) on the route ahead. Fewer changes when no candidate passes (the run records it).
+/// So sc.changes has one entry per change, two per pair.
 void time_changes_on_routes(const OfficeWorld& world, NetSimScenario& sc, int changes,
                             double every_s, double robot_radius_m);
 

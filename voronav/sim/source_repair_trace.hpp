@@ -4,6 +4,14 @@
 // and written to every JSON output (`voronav netsim --json`, the DDS robot processes' reports).
 // Both structs derive from this one and every output walks fields(), so a new counter is
 // declared and named here once instead of in each struct, copy and writer.
+//
+// Why the run's other counters (paths_lost, repairs_executed, repair_requests, repair_answers,
+// point_searches, changes_on_route, sensing_walks, ...) are not fields here: aggregate_metrics()
+// copies this whole struct from the source's report (`static_cast<SourceRepairTrace&>(M) = s`),
+// while most of those counters are sums over every robot (and repair_requests is reported both
+// summed and as the source's own, source_repair_requests). A summed counter placed here would be
+// overwritten by the source's value. They stay named in AgentReport / NetSimMetrics and in each
+// writer (netsim_json.cpp, cmd_netsim.cpp, bind_sim.cpp).
 #pragma once
 
 namespace voronav::sim {
