@@ -61,7 +61,7 @@ with cf.ThreadPoolExecutor(jobs) as ex:
             continue
         rows.append(r)
         print(r["map"], r["robots"], r["method"], r["seed"], r["coverage"], r["t90_s"], r["t99_s"],
-              "stalled", r["stalled_robots"], "yields", r.get("yields"), "idle_unsticks", r.get("idle_unsticks"), f'{r["wall_s"]} s', flush=True)
+              "stalled", r["stalled_robots"], "without target", r.get("stalled_without_target"), "yields", r.get("yields"), "idle_unsticks", r.get("idle_unsticks"), f'{r["wall_s"]} s', flush=True)
 json.dump(rows, open(os.path.join(root, "bench/results", outname + "_runs.json"), "w"))
 
 def ms(vals, d=0, missing_as=None):

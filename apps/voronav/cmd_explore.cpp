@@ -236,7 +236,8 @@ void run(const ExploreArgs& a) {
               << "overlap:        " << r.overlap << "\n"
               << "feature points: " << r.feature_points << "\n"
               << "leaves:         " << r.leaves << " (" << r.leaves_reached << " reached)\n"
-              << "stalled robots: " << r.stalled_robots << "\n";
+              << "stalled robots: " << r.stalled_robots << " (" << r.stalled_without_target
+              << " with no target any robot could reach)\n";
   }
 }
 

@@ -159,6 +159,7 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"leaves\":" << r.leaves << ",\"trees\":" << r.trees << ",\"dispatches\":" << r.dispatches
      << ",\"leaves_reached\":" << r.leaves_reached << ",\"frontier_goals\":" << r.frontier_goals
      << ",\"leaf_goals\":" << r.leaf_goals << ",\"stalled_robots\":" << r.stalled_robots
+     << ",\"stalled_without_target\":" << r.stalled_without_target
      << ",\"watchdog_events\":" << r.watchdog_events << ",\"leg_replans\":" << r.leg_replans
      << ",\"escapes\":" << r.escapes << ",\"unsticks\":" << r.unsticks
      << ",\"idle_unsticks\":" << r.idle_unsticks << ",\"yields\":" << r.yields

@@ -287,6 +287,11 @@ struct ExplorationResult {
   int leaf_goals = 0;      ///< tree leaves assigned as goals by the allocation (kTreeFrontier)
   /// Robots that stayed within stall_distance of one spot for stall_time while coverage < 0.99.
   int stalled_robots = 0;
+  /// Of stalled_robots, those declared while the last frontier allocation found no target that
+  /// any robot could reach (frontier methods and kTreeFrontier; never kTree): the team had no
+  /// work left it could reach, and the unknown that keeps coverage under 0.99 lies beyond the
+  /// planning grid (stop 25: willow's endgame). The rest stalled while work was reachable.
+  int stalled_without_target = 0;
   /// Goals given up by the progress watchdog (no progress for stall_time / 3).
   int watchdog_events = 0;
   int leg_replans = 0;    ///< tree legs re-planned around robots (TreeLegReplan::kAroundRobots)

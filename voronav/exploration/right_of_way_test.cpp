@@ -1,6 +1,7 @@
 // Tests of the runner's right of way (internal/right_of_way.hpp) and of the goalless robot's
 // unstick (ExplorationOptions::idle_unstick): the two jams traced on lab_intel with 8 robots
-// (issue 14, stop 19), each of which stalled a robot for 60 s.
+// (issue 14, stop 19), each of which stalled a robot for 60 s; and the two kinds of stall the
+// result tells apart (ExplorationResult::stalled_without_target, stop 25).
 #include <gtest/gtest.h>
 
 #include "voronav/exploration/explorer.hpp"
@@ -86,6 +87,24 @@ TEST(IdleUnstick, GoallessRobotTurningOnTheSpotIsMovedBeforeItStalls) {
   EXPECT_LT(off.coverage, 0.99);
   EXPECT_EQ(off.idle_unsticks, 0);
   EXPECT_EQ(off.stalled_robots, 1);
+  // Room B's frontier lies behind the slit, off the planning grid: the stall came with no
+  // target any robot could reach (ExplorationResult::stalled_without_target, stop 25).
+  EXPECT_EQ(off.stalled_without_target, 1);
+}
+
+// The other kind: a stall declared while the allocation had a reachable target. A stall time
+// shorter than the robot's first turn and drive to its goal makes the stall watch fire at once.
+TEST(StallKind, AStallWithAReachableTargetIsNotCountedAsWithout) {
+  ExplorationOptions o;
+  o.method = ExplorationMethod::kCoordinated;
+  o.robots = 1;
+  o.start = Vec2{1.0, 1.0};
+  o.time_limit = 20.0;
+  o.stall_time = 1.5;
+  const ExplorationResult r = run_exploration(rooms_with_a_slit(), o);
+  EXPECT_GE(r.frontier_goals, 1);
+  EXPECT_EQ(r.stalled_robots, 1);
+  EXPECT_EQ(r.stalled_without_target, 0);
 }
 
 }  // namespace

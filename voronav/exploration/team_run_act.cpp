@@ -180,6 +180,7 @@ void TeamRun::watch(std::size_t i, double t) {
   } else if (!a.stalled && t - a.anchor_t > o.stall_time && last_coverage < 0.99) {
     a.stalled = true;
     ++result.stalled_robots;
+    if (o.method != ExplorationMethod::kTree && !team_has_target) ++result.stalled_without_target;
     log_event(t, a, "stalled");
   }
 }

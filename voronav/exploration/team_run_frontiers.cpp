@@ -128,6 +128,13 @@ void TeamRun::replan_frontiers(double t) {
     }
     restore_free_cells(trav, marked);
   }
+  // ExplorationResult::stalled_without_target (an allocation without robots in it says nothing).
+  if (!active.empty()) {
+    team_has_target = false;
+    for (const auto& row : costs)
+      for (const double c : row)
+        team_has_target = team_has_target || c >= 0.0;
+  }
   std::vector<int> choice = o.method == ExplorationMethod::kFrontier
                                 ? assign_nearest(fr, costs, o.frontier)
                                 : assign_coordinated(fr, costs, o.frontier, gains);

@@ -127,6 +127,9 @@ class TeamRun {
   double tree_start;
   bool dispatched = false;  // the single dispatch of the first tree has happened
   double next_tree_time, next_replan = 0.0, next_check = 0.0, last_coverage = 0.0;
+  /// The last frontier allocation found a target (frontier or leaf) some robot could reach
+  /// (ExplorationResult::stalled_without_target).
+  bool team_has_target = true;
   bool stop = false;  // stop_at_coverage reached
 };
 
