@@ -9,8 +9,8 @@ cells among:
 - the cells those discs cover.
 
 The ground truth is rebuilt as the runner builds it: resampled to 0.1 m cells, unknown counts as
-blocked, and the map's border is closed. Issue 14, stop 25: this explains the stalled robots of
-the endgame on willow.
+blocked, and the map's border is closed. Issue 14, stop 25: on willow (coordinated, seed 6) it
+shows that the last 1.5 % that coverage counts is out of the planners' reach.
 
 Needs Debian's python3 with python3-numpy and python3-scipy.
 Usage: PYTHONPATH=build/default/python /usr/bin/python3 bench/exploration_reachable_unknown.py

@@ -290,7 +290,8 @@ struct ExplorationResult {
   /// Of stalled_robots, those declared while the last frontier allocation found no target that
   /// any robot could reach (frontier methods and kTreeFrontier; never kTree): the team had no
   /// work left it could reach, and the unknown that keeps coverage under 0.99 lies beyond the
-  /// planning grid (stop 25: willow's endgame). The rest stalled while work was reachable.
+  /// planning grid (stop 25: a frontier herd on lab_intel). The rest stalled while work was
+  /// reachable (stop 25: every willow stall left).
   int stalled_without_target = 0;
   /// Goals given up by the progress watchdog (no progress for stall_time / 3).
   int watchdog_events = 0;
