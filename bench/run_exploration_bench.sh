@@ -61,7 +61,7 @@ with cf.ThreadPoolExecutor(jobs) as ex:
             continue
         rows.append(r)
         print(r["map"], r["robots"], r["method"], r["seed"], r["coverage"], r["t90_s"], r["t99_s"],
-              "stalled", r["stalled_robots"], "without target", r.get("stalled_without_target"), "yields", r.get("yields"), "idle_unsticks", r.get("idle_unsticks"), f'{r["wall_s"]} s', flush=True)
+              "stalled", r["stalled_robots"], "without target", r.get("stalled_without_target"), "idle when explored", r.get("idle_when_explored"), "yields", r.get("yields"), "idle_unsticks", r.get("idle_unsticks"), f'{r["wall_s"]} s', flush=True)
 json.dump(rows, open(os.path.join(root, "bench/results", outname + "_runs.json"), "w"))
 
 def ms(vals, d=0, missing_as=None):
@@ -78,7 +78,9 @@ out = ["# Exploration: seed 004's Voronoi tree vs frontier baselines (multi-seed
        f"SEEDS={seeds}; TIME={sim_time} s simulated; stop at 99.5 % coverage; dt 0.1 s; 0.1 m cells). "
        "Cells: mean ± sd over the seeds; `(k/n)` = only k of n seeds reached it (mean over those). "
        "Coverage = fraction of the ground-truth free cells reachable from the start that the team map "
-       "knows. Stalled = robots idle > 60 s (within 0.5 m) while coverage < 99 %. Methods: tree = "
+       "knows. Stalled = robots idle > 60 s (within 0.5 m) while reachable unknown space remains "
+       "(a 3 x 3-cell unknown patch where a robot centre fits at the planning radius; until stop 25: "
+       "while coverage < 99 %); idle when explored = robots idle > 60 s after none remained. Methods: tree = "
        "seed 004 (400 s reactive search, one tree dispatch, then reactive search); tree+replan = "
        "the same with `--tree-replan robots` (ours); frontier = nearest frontier; coordinated = "
        "Burgard 2005; tree-frontier = ours (Burgard's allocation from t = 0 over the frontiers "
@@ -92,8 +94,8 @@ except ImportError:
     plt = None
 for m in dict.fromkeys(r["map"] for r in rows):
     out += [f"## {m}", "",
-            "| robots | method | runs | coverage % | t90 s | t99 s | distance m | collisions | stalled | leaves reached |",
-            "|---|---|---|---|---|---|---|---|---|---|"]
+            "| robots | method | runs | coverage % | t90 s | t99 s | distance m | collisions | stalled | idle when explored | leaves reached |",
+            "|---|---|---|---|---|---|---|---|---|---|---|"]
     for n in robots:
         for meth in methods:
             rs = [r for r in rows if r["map"] == m and r["robots"] == n and r["method"] == meth]
@@ -102,7 +104,8 @@ for m in dict.fromkeys(r["map"] for r in rows):
             out.append(f"| {n} | {meth} | {len(rs)} | {ms([100 * r['coverage'] for r in rs], 1)} | "
                        f"{ms([r['t90_s'] for r in rs])} | {ms([r['t99_s'] for r in rs])} | "
                        f"{ms([r['distance_m'] for r in rs])} | {ms([r['collisions'] for r in rs], 1)} | "
-                       f"{ms([r['stalled_robots'] for r in rs], 2)} | {ms([r['leaves_reached'] for r in rs], 1)} |")
+                       f"{ms([r['stalled_robots'] for r in rs], 2)} | {ms([r.get('idle_when_explored', 0) for r in rs], 2)} | "
+                       f"{ms([r['leaves_reached'] for r in rs], 1)} |")
     out.append("")
     if plt:
         for n in robots:

@@ -26,6 +26,7 @@ struct ExploreArgs {
   double time = 600.0;
   double tree_start = 400.0;
   double min_leaf_gain = 0.15;
+  double stall_reach_radius = exploration::ExplorationOptions{}.stall_reach_radius;
   std::string tree_replan = "none";
   std::string tree_leg_replan = "robots";
   std::string avoid_escape = "corridor";
@@ -33,6 +34,7 @@ struct ExploreArgs {
   std::string unstick = "on";
   std::string frontier_unstick = "off";
   std::string idle_unstick = "on";
+  std::string disperse_neighbours = "off";
   std::string yield_to_held = "on";
   std::string retry_banned = "on";
   std::string share_bans = "off";
@@ -167,12 +169,14 @@ void run(const ExploreArgs& a) {
   o.time_limit = a.time;
   o.tree_start_time = a.tree_start;
   o.min_leaf_gain = a.min_leaf_gain;
+  o.stall_reach_radius = a.stall_reach_radius;
   o.tree_replan = exploration::parse_tree_replan(a.tree_replan);
   o.tree_leg_replan = exploration::parse_tree_leg_replan(a.tree_leg_replan);
   o.controller.avoid_escape = robot::parse_avoid_escape(a.avoid_escape);
   o.controller.random_turn_rate = a.random_turn_rate;
   o.unstick = a.unstick == "on";
   o.frontier_unstick = a.frontier_unstick == "on";
+  o.disperse_neighbours = a.disperse_neighbours == "on";
   o.idle_unstick = a.idle_unstick == "on";
   o.yield_to_held = a.yield_to_held == "on";
   o.retry_banned = a.retry_banned == "on";
@@ -237,7 +241,8 @@ void run(const ExploreArgs& a) {
               << "feature points: " << r.feature_points << "\n"
               << "leaves:         " << r.leaves << " (" << r.leaves_reached << " reached)\n"
               << "stalled robots: " << r.stalled_robots << " (" << r.stalled_without_target
-              << " with no target any robot could reach)\n";
+              << " with no target any robot could reach)\n"
+              << "idle when done: " << r.idle_when_explored << "\n";
   }
 }
 
@@ -294,6 +299,9 @@ void setup(CLI::App& app) {
   add_on_off(cmd, "--idle-unstick", args->idle_unstick,
              "frontier, coordinated, tree-frontier: a robot without a goal on one spot for "
              "20 s drives to open space even with --frontier-unstick off (on, ours) or not");
+  add_on_off(cmd, "--disperse-neighbours", args->disperse_neighbours,
+             "every method: when the watchdog finds a robot on one spot, the robots without a "
+             "route within 1 m of it drive to open space first (ours)");
   add_on_off(cmd, "--yield-to-held", args->yield_to_held,
              "every method: a robot stopped by a robot in front that is held up itself "
              "backs off whatever their indices (on, ours) or only from a lower index (off)");
@@ -343,6 +351,11 @@ void setup(CLI::App& app) {
                   "tree-frontier, --tree-replan robots: a leaf is a goal only when at least this "
                   "fraction of the cells within 3 m of it is unknown (1 = leaves never qualify)")
       ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--stall-reach-radius", args->stall_reach_radius,
+                  "Stall rule: a robot idle for 60 s is stalled while unknown space remains where "
+                  "a robot centre fits at this clearance [m] (0 = body radius + clearance)")
+      ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Random seed (start spot, random driving)")
       ->check(non_negative())

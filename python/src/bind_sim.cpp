@@ -369,11 +369,16 @@ void bind_sim(py::module_& m) {
       .def_readwrite("gain_radius", &ex::ExplorationOptions::gain_radius, "[m]")
       .def_readwrite("stall_time", &ex::ExplorationOptions::stall_time, "[s]")
       .def_readwrite("stall_distance", &ex::ExplorationOptions::stall_distance, "[m]")
+      .def_readwrite("stall_reach_radius", &ex::ExplorationOptions::stall_reach_radius,
+                     "[m] 0 = the planning radius (CLI --stall-reach-radius)")
       .def_readwrite("unstick", &ex::ExplorationOptions::unstick, "tree (CLI --unstick on|off)")
       .def_readwrite("frontier_unstick", &ex::ExplorationOptions::frontier_unstick,
                      "frontier methods (CLI --frontier-unstick on|off)")
       .def_readwrite("idle_unstick", &ex::ExplorationOptions::idle_unstick,
                      "frontier methods, goalless robots (CLI --idle-unstick on|off)")
+      .def_readwrite("disperse_neighbours", &ex::ExplorationOptions::disperse_neighbours,
+                     "every method (CLI --disperse-neighbours on|off)")
+      .def_readwrite("disperse_range", &ex::ExplorationOptions::disperse_range, "[m]")
       .def_readwrite("yield_to_held", &ex::ExplorationOptions::yield_to_held,
                      "every method (CLI --yield-to-held on|off)")
       .def_readwrite("retry_banned", &ex::ExplorationOptions::retry_banned,

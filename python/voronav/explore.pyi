@@ -79,9 +79,12 @@ class Options:
     gain_radius: float  # [m]
     stall_time: float  # [s]
     stall_distance: float  # [m]
+    stall_reach_radius: float  # [m] stall rule's reach; 0 = body radius + clearance
     unstick: bool
     frontier_unstick: bool
     idle_unstick: bool  # frontier methods, goalless robots
+    disperse_neighbours: bool  # every method: robots without a route near a watchdog-stuck robot move away
+    disperse_range: float  # [m]
     yield_to_held: bool
     retry_banned: bool  # frontier methods
     share_bans: bool  # frontier methods: a reached goal no robot can observe is banned for all

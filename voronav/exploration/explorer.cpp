@@ -93,6 +93,11 @@ void ExplorationOptions::validate() const {
   positive(gain_radius, "gain_radius");
   positive(stall_time, "stall_time");
   positive(stall_distance, "stall_distance");
+  positive(disperse_range, "disperse_range");
+  if (!(stall_reach_radius >= 0.0) || !std::isfinite(stall_reach_radius))
+    throw Error("ExplorationOptions.stall_reach_radius", 0,
+                "expected a finite number >= 0 (0 = the planning radius), got " +
+                    std::to_string(stall_reach_radius));
   if (!(min_leaf_gain >= 0.0 && min_leaf_gain <= 1.0))
     throw Error("ExplorationOptions.min_leaf_gain", 0, "expected 0..1");
   if (!(hybrid_tree_start_time >= 0.0) || !std::isfinite(hybrid_tree_start_time))
@@ -160,13 +165,14 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"leaves_reached\":" << r.leaves_reached << ",\"frontier_goals\":" << r.frontier_goals
      << ",\"leaf_goals\":" << r.leaf_goals << ",\"stalled_robots\":" << r.stalled_robots
      << ",\"stalled_without_target\":" << r.stalled_without_target
+     << ",\"idle_when_explored\":" << r.idle_when_explored
      << ",\"watchdog_events\":" << r.watchdog_events << ",\"leg_replans\":" << r.leg_replans
      << ",\"escapes\":" << r.escapes << ",\"unsticks\":" << r.unsticks
-     << ",\"idle_unsticks\":" << r.idle_unsticks << ",\"yields\":" << r.yields
-     << ",\"ban_resets\":" << r.ban_resets << ",\"shared_bans\":" << r.shared_bans
-     << ",\"crowd_skips\":" << r.crowd_skips << ",\"route_drops\":" << r.route_drops
-     << ",\"margin_escapes\":" << r.margin_escapes << ",\"leaves_skipped\":" << r.leaves_skipped
-     << ",\"guard_wall_stops\":" << r.guard_wall_stops
+     << ",\"dispersals\":" << r.dispersals << ",\"idle_unsticks\":" << r.idle_unsticks
+     << ",\"yields\":" << r.yields << ",\"ban_resets\":" << r.ban_resets
+     << ",\"shared_bans\":" << r.shared_bans << ",\"crowd_skips\":" << r.crowd_skips
+     << ",\"route_drops\":" << r.route_drops << ",\"margin_escapes\":" << r.margin_escapes
+     << ",\"leaves_skipped\":" << r.leaves_skipped << ",\"guard_wall_stops\":" << r.guard_wall_stops
      << ",\"guard_robot_stops\":" << r.guard_robot_stops
      << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;

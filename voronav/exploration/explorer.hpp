@@ -117,14 +117,31 @@ struct ExplorationOptions {
   /// seeds; docs/reproductions/exploration.md, "Issue 14, stop 25").
   bool gain_through_free = true;
   /// A robot is stalled when it stays within stall_distance [m] of one spot for stall_time [s]
-  /// while reachable unknown space remains (coverage < 0.99).
+  /// while reachable unknown space remains (issue 14's definition; stop 26). Reachable unknown
+  /// space: a cell unknown to the team whose 8 neighbours are unknown too (a patch of 3 x 3
+  /// cells, so a ray gap in mapped space does not count) and where a robot centre fits at
+  /// stall_reach_radius in the ground truth, connected to the team's starts. Until stop 25 the
+  /// rule was coverage < 0.99, which counted robots idle after a map's reachable part was done
+  /// (willow: 98.5 %) and would miss stalls on maps explored beyond 99 %.
   double stall_time = 60.0;
   double stall_distance = 0.5;
+  /// [m] The robot centre's clearance for the stall rule's reach; 0 = the planning radius
+  /// (drive.body_radius + clearance, the space the team's planners can use). The body radius
+  /// (drive.body_radius) also counts space only a robot without the planning margin can reach.
+  double stall_reach_radius = 0.0;
   /// Ours, kTree: a robot the progress watchdog finds on one spot (stall_time / 3 within
   /// stall_distance) drives 1-4 m to the most open known-free place it can reach around the other
   /// robots; boxed in by robots, those touching it move away instead (`unsticks` in the result).
   /// Willow, 16 robots, 900 s: tree stalled 1 and 1 robots (seeds 1, 2) without, 0 and 0 with.
   bool unstick = true;
+  /// Ours (issue 14, stop 26): when the progress watchdog fires for a robot, the robots without
+  /// a route (reactive search, goalless) within disperse_range [m] of it drive an unstick route
+  /// to open space first, and its own unstick route may pass where they stood (`dispersals`).
+  /// Traced on willow (16 robots, tree, seeds 1 and 12): in the reactive phase a robot in a
+  /// 1.3 m wide dead-end pocket at (1.8, 9.8) m had robots of the random search wander at its
+  /// mouth 0.3-0.5 m away for 60 s; its own unstick took it deeper in (stalled).
+  bool disperse_neighbours = false;
+  double disperse_range = 1.0;
   /// The same for the frontier methods; off by default: on willow (16 robots) it stalled more
   /// robots (frontier 3 and 7 against 0 and 0; an unstick route stopped by the front guard kept
   /// the robot out of the allocation until the watchdog fired again). After the block clock fix
@@ -285,19 +302,23 @@ struct ExplorationResult {
   int leaves_reached = 0;  ///< dispatched (kTree) or allocated (kTreeFrontier) leaves reached
   int frontier_goals = 0;  ///< frontier goals assigned (frontier methods, kTreeFrontier)
   int leaf_goals = 0;      ///< tree leaves assigned as goals by the allocation (kTreeFrontier)
-  /// Robots that stayed within stall_distance of one spot for stall_time while coverage < 0.99.
+  /// Robots that stayed within stall_distance of one spot for stall_time while reachable unknown
+  /// space remained (ExplorationOptions::stall_time; each robot counted once).
   int stalled_robots = 0;
+  /// Robots that stayed on one spot for stall_time when no reachable unknown space remained
+  /// (their work was done: not stalls; each robot counted once, and not if it stalls later).
+  int idle_when_explored = 0;
   /// Of stalled_robots, those declared while the last frontier allocation found no target that
-  /// any robot could reach (frontier methods and kTreeFrontier; never kTree): the team had no
-  /// work left it could reach, and the unknown that keeps coverage under 0.99 lies beyond the
-  /// planning grid (stop 25: a frontier herd on lab_intel). The rest stalled while work was
-  /// reachable (stop 25: every willow stall left).
+  /// any robot could reach on its planning grid of the team map (frontier methods and
+  /// kTreeFrontier; never kTree), although the ground truth had reachable unknown space (stop
+  /// 25: a frontier herd on lab_intel). The rest stalled while the team had a target.
   int stalled_without_target = 0;
   /// Goals given up by the progress watchdog (no progress for stall_time / 3).
   int watchdog_events = 0;
   int leg_replans = 0;    ///< tree legs re-planned around robots (TreeLegReplan::kAroundRobots)
   int escapes = 0;        ///< corridor escapes of the reactive controllers (AvoidEscape::kCorridor)
   int unsticks = 0;       ///< unstick routes started (ExplorationOptions::unstick)
+  int dispersals = 0;     ///< of them, robots sent away (ExplorationOptions::disperse_neighbours)
   int idle_unsticks = 0;  ///< of those, by ExplorationOptions::idle_unstick
   int yields = 0;         ///< back-offs from a held-up robot of higher index (yield_to_held)
   int ban_resets = 0;     ///< goalless robots that forgot their soft bans (retry_banned)

@@ -83,10 +83,22 @@ TEST(IdleUnstick, GoallessRobotTurningOnTheSpotIsMovedBeforeItStalls) {
   EXPECT_GT(on.idle_unsticks, 0);
   EXPECT_EQ(on.stalled_robots, 0);
   o.idle_unstick = false;  // before the fix
+  // No robot fits through the slit, so room B is not reachable unknown space: the robot
+  // turning on the spot in room A, which it has mapped, is idle with its work done, not
+  // stalled (the stall rule of stop 26; until stop 25 coverage < 0.99 counted it).
+  const ExplorationResult done = run_exploration(rooms_with_a_slit(), o);
+  EXPECT_LT(done.coverage, 0.99);
+  EXPECT_EQ(done.idle_unsticks, 0);
+  EXPECT_EQ(done.stalled_robots, 0);
+  EXPECT_EQ(done.idle_when_explored, 1);
+  // The lab_intel trace's case: the unknown room is reachable in the ground truth (a centre
+  // with 0.05 m clearance passes the 0.2 m slit) but off the team's planning grid.
+  o.stall_reach_radius = 0.05;
   const ExplorationResult off = run_exploration(rooms_with_a_slit(), o);
   EXPECT_LT(off.coverage, 0.99);
   EXPECT_EQ(off.idle_unsticks, 0);
   EXPECT_EQ(off.stalled_robots, 1);
+  EXPECT_EQ(off.idle_when_explored, 0);
   // Room B's frontier lies behind the slit, off the planning grid: the stall came with no
   // target any robot could reach (ExplorationResult::stalled_without_target, stop 25).
   EXPECT_EQ(off.stalled_without_target, 1);
@@ -101,6 +113,7 @@ TEST(StallKind, AStallWithAReachableTargetIsNotCountedAsWithout) {
   o.start = Vec2{1.0, 1.0};
   o.time_limit = 20.0;
   o.stall_time = 1.5;
+  o.stall_reach_radius = 0.05;  // room B is reachable unknown space for the stall rule
   const ExplorationResult r = run_exploration(rooms_with_a_slit(), o);
   EXPECT_GE(r.frontier_goals, 1);
   EXPECT_EQ(r.stalled_robots, 1);

@@ -51,6 +51,7 @@ TeamRun::TeamRun(OccupancyGrid world_in, const ExplorationOptions& opts)
       next_tree_time(tree_start) {
   place_team_start();
   count_reachable();
+  map_stall_reach();
   for (int i = 0; i < o.robots; ++i) {
     const double yaw = std::uniform_real_distribution<double>(-3.14159, 3.14159)(rng);
     agents.push_back(std::make_unique<Agent>(o, Pose2{starts[static_cast<std::size_t>(i)], yaw},
@@ -144,6 +145,52 @@ void TeamRun::count_reachable() {
       stack.push_back(n);
     }
   }
+}
+
+void TeamRun::map_stall_reach() {
+  const double radius = o.stall_reach_radius > 0.0 ? o.stall_reach_radius : plan_radius;
+  const BinaryGrid fits = planning::make_planning_grid(blocked, radius);
+  stall_reach.assign(fits.size(), 0);
+  std::vector<Cell> stack;
+  for (const Vec2& s : starts)
+    if (const auto c = nearest_free(fits, s); c && !stall_reach[fits.index(*c)]) {
+      stall_reach[fits.index(*c)] = 1;
+      stack.push_back(*c);
+    }
+  while (!stack.empty()) {
+    const Cell c = stack.back();
+    stack.pop_back();
+    for (const Cell d : kNeighbours8) {
+      const Cell n = c + d;
+      if (!fits.contains(n) || fits[n] != 0 || stall_reach[fits.index(n)]) continue;
+      stall_reach[fits.index(n)] = 1;
+      stack.push_back(n);
+    }
+  }
+}
+
+// A reachable cell unknown to the team with its 8 neighbours unknown too: a patch of 3 x 3
+// cells, which a robot standing there would map. A gap between two laser rays in mapped space
+// is one or two cells wide and does not count (willow: the last five reachable unknown cells of
+// a run lie on such a diagonal streak, stop 26).
+bool TeamRun::unknown_space_remains(double t) {
+  if (t == unknown_checked_t) return unknown_remains;
+  unknown_checked_t = t;
+  const auto l = team.log_odds().data();
+  const int w = g.width, h = g.height;
+  const auto unknown = [&](int x, int y) {
+    return l[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+             static_cast<std::size_t>(x)] == 0.0F;
+  };
+  for (int y = 1; y + 1 < h; ++y)
+    for (int x = 1; x + 1 < w; ++x) {
+      if (!stall_reach[blocked.index(Cell{x, y})] || !unknown(x, y)) continue;
+      bool patch = true;
+      for (const Cell d : kNeighbours8)
+        patch = patch && unknown(x + d.x, y + d.y);
+      if (patch) return unknown_remains = true;
+    }
+  return unknown_remains = false;
 }
 
 // The loop: sense -> decide -> move (act) -> record, every step (core/stepper.hpp, shared with
@@ -242,7 +289,8 @@ double TeamRun::unknown_fraction(const OccupancyGrid& map, Vec2 p) const {
 std::vector<std::size_t> TeamRun::mark_others_on(BinaryGrid& grid, std::size_t i) const {
   std::vector<Vec2> others_at;
   for (std::size_t j = 0; j < agents.size(); ++j)
-    if (j != i) others_at.push_back(agents[j]->body.true_pose().position);
+    if (j != i && std::find(leaving.begin(), leaving.end(), j) == leaving.end())
+      others_at.push_back(agents[j]->body.true_pose().position);
   return block_robot_discs(grid, agents[i]->body.true_pose().position, others_at, 2.0 * body + 0.05,
                            kRobotAwareRange);
 }
@@ -307,7 +355,6 @@ void TeamRun::record(double t_end) {
   for (auto& ap : agents)
     f.poses.push_back(ap->body.true_pose());
   f.coverage = coverage_now();
-  last_coverage = f.coverage;
   if (o.on_frame) o.on_frame(f.t, f.coverage);
   {
     const auto l = team.log_odds().data();

@@ -173,15 +173,21 @@ void TeamRun::watch(std::size_t i, double t) {
     watchdog_fires(i, t, now);
   }
   // Stall watch: idle (within stall_distance of one spot) for stall_time while reachable
-  // unknown space remains.
+  // unknown space remains; idle when none remains is counted apart (its work is done).
   if (distance(now, a.anchor) > o.stall_distance) {
     a.anchor = now;
     a.anchor_t = t;
-  } else if (!a.stalled && t - a.anchor_t > o.stall_time && last_coverage < 0.99) {
-    a.stalled = true;
-    ++result.stalled_robots;
-    if (o.method != ExplorationMethod::kTree && !team_has_target) ++result.stalled_without_target;
-    log_event(t, a, "stalled");
+  } else if (!a.stalled && t - a.anchor_t > o.stall_time) {
+    if (unknown_space_remains(t)) {
+      a.stalled = true;
+      ++result.stalled_robots;
+      if (a.idle_counted) --result.idle_when_explored;
+      if (o.method != ExplorationMethod::kTree && !team_has_target) ++result.stalled_without_target;
+      log_event(t, a, "stalled");
+    } else if (!a.idle_counted) {
+      a.idle_counted = true;
+      ++result.idle_when_explored;
+    }
   }
 }
 
@@ -204,14 +210,19 @@ void TeamRun::watchdog_fires(std::size_t i, double t, Vec2 now) {
     a.unsticking = false;
   }
   a.reactive_until = t + 10.0;
+  if (o.disperse_neighbours) disperse_around(i, t);
   // ExplorationOptions::margin_escape: inside the planning margin, out of it first.
-  if (o.margin_escape && margin_escape(a, t, now)) return;
+  if (o.margin_escape && margin_escape(a, t, now)) {
+    leaving.clear();
+    return;
+  }
   if (o.method == ExplorationMethod::kTree ? o.unstick : o.frontier_unstick) {
     unstick(i, t, true);
   } else if (o.idle_unstick && !had_goal && o.method != ExplorationMethod::kTree) {
     // ExplorationOptions::idle_unstick: a goalless robot moves to open space.
     if (unstick(i, t, true)) ++result.idle_unsticks;
   }
+  leaving.clear();
 }
 
 }  // namespace voronav::exploration::internal

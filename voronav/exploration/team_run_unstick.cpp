@@ -47,6 +47,23 @@ bool TeamRun::unstick(std::size_t i, double t, bool ask_others) {
   return false;
 }
 
+// ExplorationOptions::disperse_neighbours (ours, every method): the robots near a robot the
+// watchdog found on one spot that have no route of their own (reactive search, goalless) drive
+// to open space first; the stuck robot then plans its own way out without their discs.
+void TeamRun::disperse_around(std::size_t i, double t) {
+  const Vec2 pos = agents[i]->body.true_pose().position;
+  for (std::size_t j = 0; j < agents.size(); ++j) {
+    const Agent& b = *agents[j];
+    if (j == i || b.unsticking || b.mode == AgentMode::kFollow ||
+        distance(b.body.true_pose().position, pos) > o.disperse_range)
+      continue;
+    if (unstick(j, t, false)) {
+      ++result.dispersals;
+      leaving.push_back(j);
+    }
+  }
+}
+
 // The end of an unstick route: a robot with tree legs left goes on with the next one, planned
 // from where it is; else it searches reactively (and the frontier methods allocate again).
 void TeamRun::end_unstick(Agent& a, double t) {

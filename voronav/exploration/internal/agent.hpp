@@ -56,6 +56,7 @@ struct Agent {
   double wd_t = 0.0;
   double back_off_until = 0.0;  // [s] yields to a robot with a lower index until then
   bool stalled = false;
+  bool idle_counted = false;   // ExplorationResult::idle_when_explored
   double leg_replan_t = -1e9;  // [s] last TreeLegReplan::kAroundRobots re-plan, and where
   Vec2 leg_replan_at;
   bool unsticking = false;     // following an unstick route (ExplorationOptions::unstick)

@@ -49,6 +49,11 @@ class TeamRun {
   // --- team_run.cpp: the start, the phases of a step, the results ---
   void place_team_start();
   void count_reachable();
+  /// stall_reach: the ground-truth cells where a robot centre fits at the stall rule's radius,
+  /// 8-connected to a start (ExplorationOptions::stall_reach_radius).
+  void map_stall_reach();
+  /// Reachable unknown space remains (ExplorationOptions::stall_time): evaluated once per step.
+  [[nodiscard]] bool unknown_space_remains(double t);
   [[nodiscard]] double coverage_now() const;
   void sense();
   void decide(double t);
@@ -93,6 +98,9 @@ class TeamRun {
 
   // --- team_run_unstick.cpp ---
   bool unstick(std::size_t i, double t, bool ask_others);
+  /// ExplorationOptions::disperse_neighbours: the robots without a route near robot i drive
+  /// unstick routes away; they are listed in `leaving` until i has planned its own.
+  void disperse_around(std::size_t i, double t);
   void end_unstick(Agent& a, double t);
   /// ExplorationOptions::margin_escape: true when robot a at `now` started a route out of the
   /// planning margin.
@@ -109,6 +117,9 @@ class TeamRun {
   Vec2 centre;                  // the team's start centre (the tree's root)
   std::vector<char> reachable;  // ground truth: the free cells reachable from the start
   std::size_t reachable_count = 0;
+  std::vector<char> stall_reach;  // ground truth: robot centres at the stall rule's radius
+  double unknown_checked_t = -1.0;
+  bool unknown_remains = true;
   std::vector<std::unique_ptr<Agent>> agents;
   mapping::OccupancyMap team;
   mapping::LaserModelOptions beam_model;
@@ -120,13 +131,14 @@ class TeamRun {
 
   BinaryGrid trav;  // the frontier allocation's traversable grid
   planning::BfsFlood flood, flood_opt;
-  TeamBans team_bans;               // ExplorationOptions::share_bans
-  std::vector<Vec2> leaf_goals;     // kTreeFrontier: the current tree's leaves
-  std::vector<robot::Disc> others;  // act(): the other robots' discs
+  TeamBans team_bans;                // ExplorationOptions::share_bans
+  std::vector<Vec2> leaf_goals;      // kTreeFrontier: the current tree's leaves
+  std::vector<robot::Disc> others;   // act(): the other robots' discs
+  std::vector<std::size_t> leaving;  // disperse_around(): robots sent away (not planned around)
   bool tree_method, hybrid;
   double tree_start;
   bool dispatched = false;  // the single dispatch of the first tree has happened
-  double next_tree_time, next_replan = 0.0, next_check = 0.0, last_coverage = 0.0;
+  double next_tree_time, next_replan = 0.0, next_check = 0.0;
   /// The last frontier allocation found a target (frontier or leaf) some robot could reach
   /// (ExplorationResult::stalled_without_target).
   bool team_has_target = true;
