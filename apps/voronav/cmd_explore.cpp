@@ -19,39 +19,52 @@
 namespace voronav::cli {
 namespace {
 
+/// The library's defaults: every default that `explore` shows in --help or uses is taken from a
+/// default-constructed ExplorationOptions, so that a default changed in the library cannot
+/// disagree with the CLI.
+const exploration::ExplorationOptions& library_defaults() {
+  static const exploration::ExplorationOptions d{};
+  return d;
+}
+
+/// An on|off switch's value as the CLI spells it.
+std::string on_off(bool on) {
+  return on ? "on" : "off";
+}
+
 struct ExploreArgs {
   std::string world;
-  int robots = 4;
-  std::string method = "tree";
-  double time = 600.0;
-  double tree_start = 400.0;
-  double min_leaf_gain = 0.15;
-  double stall_reach_radius = exploration::ExplorationOptions{}.stall_reach_radius;
-  std::string tree_replan = "none";
-  std::string tree_leg_replan = "robots";
-  std::string avoid_escape = "corridor";
-  double random_turn_rate = 0.0;
-  std::string unstick = "on";
-  std::string frontier_unstick = "off";
-  std::string idle_unstick = "on";
-  std::string disperse_neighbours = "off";
-  std::string yield_to_held = "on";
-  std::string retry_banned = "on";
-  std::string share_bans = "off";
-  int crowd_limit = 0;
-  std::string drop_goalless_routes = "off";
-  std::string margin_escape = "on";
-  std::string skip_known_leaves = "off";
-  std::string gain_through_free = "on";
-  std::string guard = "corridor";
-  std::uint64_t seed = 1;
+  int robots = library_defaults().robots;
+  std::string method{to_string(library_defaults().method)};
+  double time = library_defaults().time_limit;
+  double tree_start = library_defaults().tree_start_time;
+  double min_leaf_gain = library_defaults().min_leaf_gain;
+  double stall_reach_radius = library_defaults().stall_reach_radius;
+  std::string tree_replan{to_string(library_defaults().tree_replan)};
+  std::string tree_leg_replan{to_string(library_defaults().tree_leg_replan)};
+  std::string avoid_escape{robot::to_string(library_defaults().controller.avoid_escape)};
+  double random_turn_rate = library_defaults().controller.random_turn_rate;
+  std::string unstick = on_off(library_defaults().unstick);
+  std::string frontier_unstick = on_off(library_defaults().frontier_unstick);
+  std::string idle_unstick = on_off(library_defaults().idle_unstick);
+  std::string disperse_neighbours = on_off(library_defaults().disperse_neighbours);
+  std::string yield_to_held = on_off(library_defaults().yield_to_held);
+  std::string retry_banned = on_off(library_defaults().retry_banned);
+  std::string share_bans = on_off(library_defaults().share_bans);
+  int crowd_limit = library_defaults().crowd_limit;
+  std::string drop_goalless_routes = on_off(library_defaults().drop_goalless_routes);
+  std::string margin_escape = on_off(library_defaults().margin_escape);
+  std::string skip_known_leaves = on_off(library_defaults().skip_known_leaves);
+  std::string gain_through_free = on_off(library_defaults().gain_through_free);
+  std::string guard{to_string(library_defaults().guard)};
+  std::uint64_t seed = library_defaults().seed;
   std::string start;
   std::filesystem::path out;
-  double stop_at = 1.01;
-  int picture_px = 900;
+  double stop_at = library_defaults().stop_at_coverage;
+  int picture_px = 900;  // CLI only (the pictures)
   bool json = false;
   std::filesystem::path mcap;
-  double known_map_period_s = 5.0;
+  double known_map_period_s = 5.0;  // CLI only (the bag)
 };
 
 render::Color robot_color(std::size_t i) {

@@ -36,8 +36,8 @@ struct NetsimArgs {
   std::string method = "both";
   int runs = 16;
   int run = 1;  ///< the paper run --write-scenario writes
-  std::uint64_t seed = 1;
-  double loss = 0.0;
+  std::uint64_t seed = sim::NetSimOptions{}.seed;
+  double loss = sim::NetSimOptions{}.radio.loss;
   std::string out;
   std::string plots;
   std::string write_scenario;

@@ -28,7 +28,7 @@ struct TopoArgs {
   std::string method = "edt";
   std::string metric = "ipa";
   int free_from = 250;
-  double min_region_area = 1.0;
+  double min_region_area = topology::TopologyOptions{}.min_region_area;
   double absorb_obstacles = topology::TopologyOptions{}.regions_absorb_obstacles;
   double max_rise_walk = topology::TopologyOptions{}.max_rise_walk;
   double passage_length = topology::TopologyOptions{}.passage_length;

@@ -25,11 +25,7 @@ constexpr double kPlanRadius = 0.12 + 0.1;  // body + ExplorationOptions::cleara
 // 5 x 3 m of free space (0.1 m cells) with a block over x 3.0-4.0 m, y 0-1.5 m: its up-left
 // corner is at (3.0, 1.5) m.
 BinaryGrid world_with_corner() {
-  GridGeometry g;
-  g.width = 50;
-  g.height = 30;
-  g.resolution = 0.1;
-  BinaryGrid w(g, 0);
+  BinaryGrid w(50, 30, 0, 0.1);
   for (int y = 0; y < 15; ++y)
     for (int x = 30; x < 40; ++x)
       w[Cell{x, y}] = 1;

@@ -22,11 +22,7 @@ const double kMargin = kBody + ExplorationOptions{}.clearance;
 // A 4 x 4 m room of 0.1 m cells, walled at its edge, with a 2 x 3 cell block (the speckle) whose
 // lower-left corner is at (2.0, 2.0) m.
 BinaryGrid room(bool with_speckle) {
-  GridGeometry g;
-  g.width = 40;
-  g.height = 40;
-  g.resolution = 0.1;
-  BinaryGrid b(g, 0);
+  BinaryGrid b(40, 40, 0, 0.1);
   for (int k = 0; k < 40; ++k) {
     b[Cell{k, 0}] = b[Cell{k, 39}] = 1;
     b[Cell{0, k}] = b[Cell{39, k}] = 1;

@@ -49,11 +49,7 @@ TEST(RightOfWay, NoBackOffForARobotBehindFarAwayOrMoving) {
 // coverage counts room B), but no robot fits through, so once the frontiers at the slit are
 // banned the robot has no goal and searches reactively in room A.
 OccupancyGrid rooms_with_a_slit() {
-  GridGeometry g;
-  g.width = 100;
-  g.height = 34;
-  g.resolution = 0.1;
-  OccupancyGrid w(g, kOccupied);
+  OccupancyGrid w(100, 34, kOccupied, 0.1);
   for (int y = 2; y < 32; ++y) {
     for (int x = 2; x < 32; ++x)
       w[Cell{x, y}] = kFree;  // room A
@@ -66,16 +62,22 @@ OccupancyGrid rooms_with_a_slit() {
   return w;
 }
 
+// The runs below: one robot of the coordinated method, starting in room A's lower-left corner.
+ExplorationOptions one_robot_in_room_a(double time_limit) {
+  ExplorationOptions o;
+  o.method = ExplorationMethod::kCoordinated;
+  o.robots = 1;
+  o.start = Vec2{1.0, 1.0};
+  o.time_limit = time_limit;
+  return o;
+}
+
 // lab_intel, 8 robots, coordinated, seed 1: every frontier left was banned by every robot, and a
 // goalless robot turned on the spot in a corner (rule 2 found no clear front) for 52 s: stalled.
 // Here the reactive search's obs_dist is raised so that rule 2 never finds a clear front in room
 // A (the turn on the spot of the trace, every time the robot has no goal).
 TEST(IdleUnstick, GoallessRobotTurningOnTheSpotIsMovedBeforeItStalls) {
-  ExplorationOptions o;
-  o.method = ExplorationMethod::kCoordinated;
-  o.robots = 1;
-  o.start = Vec2{1.0, 1.0};
-  o.time_limit = 200.0;
+  ExplorationOptions o = one_robot_in_room_a(200.0);
   o.frontier_controller.obs_dist = 4.5;  // every front sector always "occupied" in room A
   o.frontier_controller.approach_dist = 4.5;
   const ExplorationResult on = run_exploration(rooms_with_a_slit(), o);
@@ -107,11 +109,7 @@ TEST(IdleUnstick, GoallessRobotTurningOnTheSpotIsMovedBeforeItStalls) {
 // The other kind: a stall declared while the allocation had a reachable target. A stall time
 // shorter than the robot's first turn and drive to its goal makes the stall watch fire at once.
 TEST(StallKind, AStallWithAReachableTargetIsNotCountedAsWithout) {
-  ExplorationOptions o;
-  o.method = ExplorationMethod::kCoordinated;
-  o.robots = 1;
-  o.start = Vec2{1.0, 1.0};
-  o.time_limit = 20.0;
+  ExplorationOptions o = one_robot_in_room_a(20.0);
   o.stall_time = 1.5;
   o.stall_reach_radius = 0.05;  // room B is reachable unknown space for the stall rule
   const ExplorationResult r = run_exploration(rooms_with_a_slit(), o);

@@ -21,11 +21,7 @@ namespace {
 // ray passes the opening only steeply, so the channel's far cells are never seen and the known
 // channel cell next to them stays a frontier, whose target is at the corridor's end.
 OccupancyGrid room_with_crack() {
-  GridGeometry g;
-  g.width = 36;
-  g.height = 46;
-  g.resolution = 0.2;
-  OccupancyGrid w(g, kOccupied);
+  OccupancyGrid w(36, 46, kOccupied, 0.2);
   for (int y = 1; y < 20; ++y)
     for (int x = 1; x < 30; ++x)
       w[Cell{x, y}] = kFree;

@@ -3,6 +3,8 @@
 // feature points, the legs to their leaves and the checks of those legs against the map, and the
 // re-plans that are ours, each behind its option (TreeReplan::kFromRobots,
 // TreeLegReplan::kAroundRobots).
+#include <optional>
+
 #include "voronav/exploration/internal/plan_grid.hpp"
 #include "voronav/exploration/internal/team_run.hpp"
 #include "voronav/exploration/point_voronoi.hpp"
@@ -11,8 +13,8 @@
 namespace voronav::exploration::internal {
 
 // The next leg of a robot's tree route, or (none left) the end of its dispatch.
-void TeamRun::start_leg(Agent& a, double t) {
-  if (o.skip_known_leaves) skip_known_leaves(a, t);
+void TeamRun::start_leg(Agent& a, double t, const TreeGrids* built) {
+  if (o.skip_known_leaves) skip_known_leaves(a, t, built);
   if (!a.legs.empty()) {
     start_follow(a, a.legs.front());
     a.on_tree = true;
@@ -28,9 +30,11 @@ void TeamRun::start_leg(Agent& a, double t) {
 // ExplorationOptions::skip_known_leaves (ours): the legs whose leaves the team map already knows
 // are dropped; the next one is planned from where the robot stands (its tree route started at the
 // leaf before, which the robot did not visit). A leaf out of reach from here is given up.
-void TeamRun::skip_known_leaves(Agent& a, double t) {
+// `built`: the team map and tree grid of this step when the caller has them (else built here).
+void TeamRun::skip_known_leaves(Agent& a, double t, const TreeGrids* built) {
   if (a.legs.empty()) return;
-  const OccupancyGrid tg = team_grid(team);
+  std::optional<OccupancyGrid> own_tg;
+  const OccupancyGrid& tg = built ? built->team : own_tg.emplace(team_grid(team));
   bool skipped = false;
   while (!a.legs.empty() && unknown_fraction(tg, a.legs.front().back()) < o.min_leaf_gain) {
     a.legs.pop_front();
@@ -39,7 +43,8 @@ void TeamRun::skip_known_leaves(Agent& a, double t) {
     skipped = true;
   }
   if (!skipped) return;
-  const BinaryGrid opt = tree_grid(tg, plan_radius);
+  std::optional<BinaryGrid> own_opt;
+  const BinaryGrid& opt = built ? built->opt : own_opt.emplace(tree_grid(tg, plan_radius));
   while (!a.legs.empty() && !leg_from_here(a, opt))
     a.legs.pop_front();
 }
@@ -54,7 +59,7 @@ bool TeamRun::leg_from_here(Agent& a, const BinaryGrid& opt) {
   return true;
 }
 
-void TeamRun::finish_leg(Agent& a, double t) {
+void TeamRun::finish_leg(Agent& a, double t, const TreeGrids* built) {
   if (!a.legs.empty()) {
     if (distance(a.body.true_pose().position, a.legs.front().back()) < 2.0 * o.goal_tolerance) {
       ++result.leaves_reached;
@@ -62,7 +67,7 @@ void TeamRun::finish_leg(Agent& a, double t) {
     }
     a.legs.pop_front();
   }
-  start_leg(a, t);
+  start_leg(a, t, built);
 }
 
 void TeamRun::record_dispatch(double t, std::size_t i, bool first, Vec2 root,
@@ -127,7 +132,8 @@ bool TeamRun::dispatch_first(double t) {
       a.tree_done = true;
       continue;
     }
-    start_leg(a, t);
+    const TreeGrids built{tg, opt};  // for skip_known_leaves
+    start_leg(a, t, &built);
     record_dispatch(t, i, true, root, goals);
   }
   result.leaves = static_cast<int>(tree.leaves_by_distance().size());
@@ -169,7 +175,8 @@ void TeamRun::replan_from_robot(std::size_t i, double t) {
     leg.insert(leg.end(), w.begin() + 1, w.end());
     a.legs.assign(1, std::move(leg));
     a.tree_done = false;
-    start_leg(a, t);
+    const TreeGrids built{tg, opt};  // for skip_known_leaves
+    start_leg(a, t, &built);
     record_dispatch(t, i, false, root, {lp});
     return;
   }
@@ -185,6 +192,7 @@ void TeamRun::check_tree_routes(double t) {
   if (!any) return;
   const OccupancyGrid tg = team_grid(team);
   const BinaryGrid opt = tree_grid(tg, plan_radius);
+  const TreeGrids built{tg, opt};  // for skip_known_leaves: the team map does not change here
   for (auto& ap : agents) {
     Agent& a = *ap;
     if (!a.on_tree || a.mode != AgentMode::kFollow || t < a.reactive_until) continue;
@@ -193,7 +201,7 @@ void TeamRun::check_tree_routes(double t) {
     // within gain_radius of it is about to reach it) ends the leg here.
     if (o.skip_known_leaves && !a.legs.empty() && distance(pos, a.route.back()) > o.gain_radius &&
         unknown_fraction(tg, a.route.back()) < o.min_leaf_gain) {
-      start_leg(a, t);
+      start_leg(a, t, &built);
       continue;
     }
     bool ok = nearest_free(opt, a.route.back(), 1).has_value();
@@ -205,7 +213,7 @@ void TeamRun::check_tree_routes(double t) {
     if (ok) continue;
     std::vector<Vec2> path = path_on(opt, pos, a.route.back());
     if (path.empty() || distance(path.back(), a.route.back()) > 0.5) {
-      finish_leg(a, t);  // unreachable now: give the leaf up
+      finish_leg(a, t, &built);  // unreachable now: give the leaf up
       continue;
     }
     a.legs.front() = path;

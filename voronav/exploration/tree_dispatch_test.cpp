@@ -120,12 +120,19 @@ TEST(Dispatch, Figure9ListsFor2And3And6Robots) {
   }
 }
 
-ExplorationOptions paper_tree(TreeReplan replan) {
+// The tree method on the paper world from its start (figure 7).
+ExplorationOptions paper_tree(int robots, double time_limit) {
   ExplorationOptions o;
   o.method = ExplorationMethod::kTree;
-  o.robots = 3;
+  o.robots = robots;
   o.start = kPaperWorldStart;
-  o.time_limit = 260;
+  o.time_limit = time_limit;
+  return o;
+}
+
+// 3 robots, the first tree at 120 s, 260 s in all: keeps the dispatch tests short.
+ExplorationOptions short_paper_tree(TreeReplan replan) {
+  ExplorationOptions o = paper_tree(3, 260);
   o.tree_start_time = 120;
   o.tree_replan = replan;
   return o;
@@ -133,7 +140,7 @@ ExplorationOptions paper_tree(TreeReplan replan) {
 
 TEST(Dispatch, OneDispatchAsThePaper) {
   static const OccupancyGrid world = paper_world(0.1);
-  const ExplorationResult r = run_exploration(world, paper_tree(TreeReplan::kNone));
+  const ExplorationResult r = run_exploration(world, short_paper_tree(TreeReplan::kNone));
   ASSERT_EQ(r.trees, 1);
   ASSERT_EQ(r.dispatches, 3);  // one per robot, all at the first tree
   for (const TreeDispatch& d : r.recording.dispatches) {
@@ -166,7 +173,7 @@ TEST(Dispatch, OneDispatchAsThePaper) {
 
 TEST(Dispatch, ReplanNeverRoutesARobotBackToTheRoot) {
   static const OccupancyGrid world = paper_world(0.1);
-  const ExplorationResult r = run_exploration(world, paper_tree(TreeReplan::kFromRobots));
+  const ExplorationResult r = run_exploration(world, short_paper_tree(TreeReplan::kFromRobots));
   ASSERT_FALSE(r.recording.dispatches.empty());
   const Vec2 first_root = r.recording.dispatches.front().root;
   int replans = 0;
@@ -196,12 +203,8 @@ TEST(Dispatch, ReplanNeverRoutesARobotBackToTheRoot) {
 TEST(Dispatch, SkippingKnownLeavesReachesTheUnknownSooner) {
   static const OccupancyGrid world = paper_world(0.05);
   const auto run = [](bool skip) {
-    ExplorationOptions o;
-    o.method = ExplorationMethod::kTree;
-    o.robots = 4;
-    o.start = kPaperWorldStart;
+    ExplorationOptions o = paper_tree(4, 700);
     o.seed = 1;
-    o.time_limit = 700;
     o.stop_at_coverage = 0.99;
     o.skip_known_leaves = skip;
     return run_exploration(world, o);

@@ -12,11 +12,7 @@ namespace {
 
 // 12 x 2 m, every cell free: no wall anywhere, only the map's edge.
 OccupancyGrid open_world() {
-  GridGeometry g;
-  g.width = 120;
-  g.height = 20;
-  g.resolution = 0.1;
-  return OccupancyGrid(g, kFree);
+  return OccupancyGrid(120, 20, kFree, 0.1);
 }
 
 // The longest time [s] robot k stayed within 0.5 m of one spot (the stall watch's measure; the

@@ -81,10 +81,16 @@ class TeamRun {
   void watchdog_fires(std::size_t i, double t, Vec2 now);
 
   // --- team_run_tree.cpp ---
-  void start_leg(Agent& a, double t);
-  void skip_known_leaves(Agent& a, double t);
+  /// The team map and its tree grid (only known obstacles block) that a caller has built at this
+  /// step already, for skip_known_leaves (null: it builds them itself when it needs them).
+  struct TreeGrids {
+    const OccupancyGrid& team;
+    const BinaryGrid& opt;
+  };
+  void start_leg(Agent& a, double t, const TreeGrids* built = nullptr);
+  void skip_known_leaves(Agent& a, double t, const TreeGrids* built);
   bool leg_from_here(Agent& a, const BinaryGrid& opt);
-  void finish_leg(Agent& a, double t);
+  void finish_leg(Agent& a, double t, const TreeGrids* built = nullptr);
   void record_dispatch(double t, std::size_t i, bool first, Vec2 root,
                        const std::vector<Vec2>& leaves);
   bool dispatch_first(double t);
