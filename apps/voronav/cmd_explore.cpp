@@ -313,8 +313,8 @@ void setup(CLI::App& app) {
              "frontier, coordinated, tree-frontier: a robot without a goal on one spot for "
              "20 s drives to open space even with --frontier-unstick off (on, ours) or not");
   add_on_off(cmd, "--disperse-neighbours", args->disperse_neighbours,
-             "every method: when the watchdog finds a robot on one spot, the robots without a "
-             "route within 1 m of it drive to open space first (ours)");
+             "tree: when the watchdog finds a robot on one spot, the robots without a route "
+             "within 1 m of it drive to open space first (ours)");
   add_on_off(cmd, "--yield-to-held", args->yield_to_held,
              "every method: a robot stopped by a robot in front that is held up itself "
              "backs off whatever their indices (on, ours) or only from a lower index (off)");

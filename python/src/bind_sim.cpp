@@ -377,7 +377,7 @@ void bind_sim(py::module_& m) {
       .def_readwrite("idle_unstick", &ex::ExplorationOptions::idle_unstick,
                      "frontier methods, goalless robots (CLI --idle-unstick on|off)")
       .def_readwrite("disperse_neighbours", &ex::ExplorationOptions::disperse_neighbours,
-                     "every method (CLI --disperse-neighbours on|off)")
+                     "tree (CLI --disperse-neighbours on|off)")
       .def_readwrite("disperse_range", &ex::ExplorationOptions::disperse_range, "[m]")
       .def_readwrite("yield_to_held", &ex::ExplorationOptions::yield_to_held,
                      "every method (CLI --yield-to-held on|off)")

@@ -83,7 +83,7 @@ class Options:
     unstick: bool
     frontier_unstick: bool
     idle_unstick: bool  # frontier methods, goalless robots
-    disperse_neighbours: bool  # every method: robots without a route near a watchdog-stuck robot move away
+    disperse_neighbours: bool  # tree: robots without a route near a watchdog-stuck robot move away
     disperse_range: float  # [m]
     yield_to_held: bool
     retry_banned: bool  # frontier methods

@@ -80,11 +80,15 @@ TEST(IdleUnstick, GoallessRobotTurningOnTheSpotIsMovedBeforeItStalls) {
   ExplorationOptions o = one_robot_in_room_a(200.0);
   o.frontier_controller.obs_dist = 4.5;  // every front sector always "occupied" in room A
   o.frontier_controller.approach_dist = 4.5;
+  // The lab_intel trace's case: the unknown room is reachable in the ground truth (a centre
+  // with 0.05 m clearance passes the 0.2 m slit) but off the team's planning grid.
+  o.stall_reach_radius = 0.05;
   const ExplorationResult on = run_exploration(rooms_with_a_slit(), o);
   EXPECT_LT(on.coverage, 0.99);  // room B stays unknown: the stall rule is armed
   EXPECT_GT(on.idle_unsticks, 0);
   EXPECT_EQ(on.stalled_robots, 0);
   o.idle_unstick = false;  // before the fix
+  o.stall_reach_radius = 0.0;
   // No robot fits through the slit, so room B is not reachable unknown space: the robot
   // turning on the spot in room A, which it has mapped, is idle with its work done, not
   // stalled (the stall rule of stop 26; until stop 25 coverage < 0.99 counted it).
@@ -93,8 +97,6 @@ TEST(IdleUnstick, GoallessRobotTurningOnTheSpotIsMovedBeforeItStalls) {
   EXPECT_EQ(done.idle_unsticks, 0);
   EXPECT_EQ(done.stalled_robots, 0);
   EXPECT_EQ(done.idle_when_explored, 1);
-  // The lab_intel trace's case: the unknown room is reachable in the ground truth (a centre
-  // with 0.05 m clearance passes the 0.2 m slit) but off the team's planning grid.
   o.stall_reach_radius = 0.05;
   const ExplorationResult off = run_exploration(rooms_with_a_slit(), o);
   EXPECT_LT(off.coverage, 0.99);

@@ -8,6 +8,7 @@
 #include "voronav/core/error.hpp"
 #include "voronav/exploration/internal/information_gain.hpp"
 #include "voronav/exploration/internal/plan_grid.hpp"
+#include "voronav/exploration/internal/stall_rule.hpp"
 #include "voronav/field/distance_transform.hpp"
 
 namespace voronav::exploration::internal {
@@ -148,49 +149,15 @@ void TeamRun::count_reachable() {
 }
 
 void TeamRun::map_stall_reach() {
-  const double radius = o.stall_reach_radius > 0.0 ? o.stall_reach_radius : plan_radius;
-  const BinaryGrid fits = planning::make_planning_grid(blocked, radius);
-  stall_reach.assign(fits.size(), 0);
-  std::vector<Cell> stack;
-  for (const Vec2& s : starts)
-    if (const auto c = nearest_free(fits, s); c && !stall_reach[fits.index(*c)]) {
-      stall_reach[fits.index(*c)] = 1;
-      stack.push_back(*c);
-    }
-  while (!stack.empty()) {
-    const Cell c = stack.back();
-    stack.pop_back();
-    for (const Cell d : kNeighbours8) {
-      const Cell n = c + d;
-      if (!fits.contains(n) || fits[n] != 0 || stall_reach[fits.index(n)]) continue;
-      stall_reach[fits.index(n)] = 1;
-      stack.push_back(n);
-    }
-  }
+  stall_reach =
+      robot_reach(blocked, o.stall_reach_radius > 0.0 ? o.stall_reach_radius : plan_radius, starts);
 }
 
-// A reachable cell unknown to the team with its 8 neighbours unknown too: a patch of 3 x 3
-// cells, which a robot standing there would map. A gap between two laser rays in mapped space
-// is one or two cells wide and does not count (willow: the last five reachable unknown cells of
-// a run lie on such a diagonal streak, stop 26).
 bool TeamRun::unknown_space_remains(double t) {
   if (t == unknown_checked_t) return unknown_remains;
   unknown_checked_t = t;
-  const auto l = team.log_odds().data();
-  const int w = g.width, h = g.height;
-  const auto unknown = [&](int x, int y) {
-    return l[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
-             static_cast<std::size_t>(x)] == 0.0F;
-  };
-  for (int y = 1; y + 1 < h; ++y)
-    for (int x = 1; x + 1 < w; ++x) {
-      if (!stall_reach[blocked.index(Cell{x, y})] || !unknown(x, y)) continue;
-      bool patch = true;
-      for (const Cell d : kNeighbours8)
-        patch = patch && unknown(x + d.x, y + d.y);
-      if (patch) return unknown_remains = true;
-    }
-  return unknown_remains = false;
+  unknown_remains = unknown_patch_in_reach(g, stall_reach, team.log_odds().data());
+  return unknown_remains;
 }
 
 // The loop: sense -> decide -> move (act) -> record, every step (core/stepper.hpp, shared with

@@ -47,8 +47,8 @@ bool TeamRun::unstick(std::size_t i, double t, bool ask_others) {
   return false;
 }
 
-// ExplorationOptions::disperse_neighbours (ours, every method): the robots near a robot the
-// watchdog found on one spot that have no route of their own (reactive search, goalless) drive
+// ExplorationOptions::disperse_neighbours (ours, kTree): the robots near a robot the watchdog
+// found on one spot that have no route of their own (the reactive search) drive
 // to open space first; the stuck robot then plans its own way out without their discs.
 void TeamRun::disperse_around(std::size_t i, double t) {
   const Vec2 pos = agents[i]->body.true_pose().position;
