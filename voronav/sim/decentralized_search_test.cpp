@@ -146,3 +146,29 @@ TEST(DecentralizedSearch, ABoxedInSourceSensesTheGapsOfItsKnownSpaceAndArrives) 
 
 }  // namespace
 }  // namespace voronav::sim
+
+namespace voronav::sim {
+namespace {
+
+// Scenario 4, run 15 (data/netsim/s4_run15_window.yaml; issue #13, stop 26). The source has
+// spent its last Search (max_search_attempts) and walks to the destination on its own map. The
+// third change (429.8 s) closes the door ahead; it replans round it and, at 484 s at
+// (39.7, 24.5), the walk can no longer be planned in the window around its two ends: the only
+// way its map holds runs 0.4 m west of the window. It stopped there and stood still to the 900 s
+// limit. Now the source's own destination walk plans once more on its whole local map before it
+// stops (walk_replan_whole_map stays off for every other walk) and arrives.
+TEST(DecentralizedSearch, ASourceWalkBlockedInItsWindowPlansOnItsWholeMap) {
+  const auto f =
+      load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/s4_run15_window.yaml");
+  NetSimOptions o = f.options;
+  o.method = Method::kDecentralized;
+  ASSERT_FALSE(o.walk_replan_whole_map);
+  const auto m = run_netsim(f.scenario, o).metrics;
+  EXPECT_EQ(m.search_attempts, o.max_search_attempts) << "no Search left: only its walk";
+  EXPECT_EQ(m.changes_on_route, 3);
+  EXPECT_TRUE(m.success) << "stopped at (39.7, 24.5) at 484 s before the fix";
+  EXPECT_LT(m.simulated_s, o.time_limit_s);
+}
+
+}  // namespace
+}  // namespace voronav::sim

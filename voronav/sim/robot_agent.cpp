@@ -421,7 +421,8 @@ void RobotAgent::move(double now_s) {
     r.walk_since_check += moved;
     r.walk_map_changed |= changed;
     bool done = r.wp >= r.waypoints.size();
-    if (changed && !done && walk_blocked() && !plan_walk(r.waypoints.back())) {
+    if (changed && !done && walk_blocked() && !plan_walk(r.waypoints.back()) &&
+        !source_walk_on_whole_map()) {
       r.waypoints.clear();  // no way on: stop here
       done = true;
     }
@@ -475,10 +476,23 @@ bool RobotAgent::segment_known_free(Vec2 a, Vec2 b) const {
 }
 
 // ---- walking on the robot's own (optimistic) map ----------------------------------------------
+/// The source's own walk to the destination is blocked and cannot be planned again in the window
+/// around its two ends: before it stops, it plans once more on a window holding its whole local
+/// map (as walk_replan_whole_map does for every walk). Without this the window can cut off the
+/// only way its map holds, and a source that has spent its last Search stands still to the time
+/// limit (scenario 4, run 15: stopped at 484 s, 0.4 m short of the way; issue #13, stop 26 in
+/// docs/reproductions/networked.md). Only that walk: relays' walks keep the option's setting.
+bool RobotAgent::source_walk_on_whole_map() {
+  if (!is_source() || r_.walk != Walk::kDestination || opt().walk_replan_whole_map) return false;
+  return plan_walk(r_.waypoints.back(), nullptr, true);
+}
+
 /// A* on the robot's own map from its position to `target`; unknown cells count as free
-/// (optimistic). With `seen`, only cells it knows free or that lie inside the free disc of a
-/// point of `seen` (space that point's maker sensed free) may be used (repair_fix_seen_only).
-bool RobotAgent::plan_walk(Vec2 target, const std::vector<VoronoiPoint>* seen) {
+/// (optimistic). With `whole_map` (or walk_replan_whole_map), a failed plan is tried again on a
+/// window holding the whole local map. With `seen`, only cells it knows free or that lie inside the
+/// free disc of a point of `seen` (space that point's maker sensed free) may be used
+/// (repair_fix_seen_only).
+bool RobotAgent::plan_walk(Vec2 target, const std::vector<VoronoiPoint>* seen, bool whole_map) {
   auto& r = r_;
   const auto& wg = scen().world.geometry();
   const auto a = wg.world_to_cell(r.pos), b = wg.world_to_cell(target);
@@ -493,7 +507,7 @@ bool RobotAgent::plan_walk(Vec2 target, const std::vector<VoronoiPoint>* seen) {
   planning::PlanResult result;
   for (int pass = 0; pass < 2; ++pass) {
     if (pass == 1) {
-      if (!opt().walk_replan_whole_map) break;
+      if (!opt().walk_replan_whole_map && !whole_map) break;
       const Cell mlo = r.map.offset();
       const Cell mhi{mlo.x + r.map.grid().width() - 1, mlo.y + r.map.grid().height() - 1};
       const Cell lo2{std::max(0, std::min(lo.x, mlo.x - 2)),

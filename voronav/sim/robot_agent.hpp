@@ -214,8 +214,10 @@ class RobotAgent {
   // motion
   bool segment_blocked(Vec2 a, Vec2 b) const;
   bool segment_known_free(Vec2 a, Vec2 b) const;
-  bool plan_walk(Vec2 target, const std::vector<network::VoronoiPoint>* seen = nullptr);
+  bool plan_walk(Vec2 target, const std::vector<network::VoronoiPoint>* seen = nullptr,
+                 bool whole_map = false);
   bool walk_blocked() const;
+  bool source_walk_on_whole_map();
   void walk_progress(bool arrived);
   // decentralized: Search (Tables 1-2)
   void start_search();
