@@ -134,9 +134,10 @@ struct ExplorationOptions {
   /// robots; boxed in by robots, those touching it move away instead (`unsticks` in the result).
   /// Willow, 16 robots, 900 s: tree stalled 1 and 1 robots (seeds 1, 2) without, 0 and 0 with.
   bool unstick = true;
-  /// Ours (issue 14, stop 26), kTree: when the progress watchdog fires for a robot, the robots
-  /// without a route (reactive search) within disperse_range [m] of it drive an unstick route to
-  /// open space first, and its own unstick route may pass where they stood (`dispersals`). The
+  /// Ours (issue 14, stop 26), kTree: when the progress watchdog fires for a robot that has been
+  /// on one spot (stall_distance) for half of stall_time, the robots without a route (reactive
+  /// search) within disperse_range [m] of it drive an unstick route to open space first, and its
+  /// own unstick route may pass where they stood (`dispersals`). The
   /// frontier methods' goalless robots have idle_unstick; their willow runs have no stall left.
   /// Traced on willow (16 robots, tree, seeds 1 and 12): in the reactive phase a robot in a
   /// 1.3 m wide dead-end pocket at (1.8, 9.8) m had robots of the random search wander at its
