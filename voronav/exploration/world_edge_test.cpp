@@ -16,7 +16,7 @@ OccupancyGrid open_world() {
 }
 
 // The longest time [s] robot k stayed within 0.5 m of one spot (the stall watch's measure; the
-// run's stall count also needs coverage < 99 %, which a small open world passes quickly).
+// run's stall count also needs reachable unknown space, which a small open world soon has not).
 double longest_stay(const ExplorationResult& r, std::size_t k) {
   const auto& f = r.recording.frames;
   double longest = 0.0, since = f.front().t;
