@@ -17,11 +17,27 @@ namespace voronav::exploration::internal {
 // same way. Traced on willow with 16 robots (issue 14): a robot in a small room with three
 // robots at its door, and one between map speckle and two robots, dithered in avoid turns and
 // 1 m corridor escapes for 60 s (stalled).
+const BinaryGrid& TeamRun::plan_grid_now(double t) {
+  if (t != plan_grid_t) {
+    plan_grid_cache = traversable_of(team_grid(team), plan_radius);
+    plan_grid_t = t;
+  }
+  return plan_grid_cache;
+}
+
+const field::DistanceField& TeamRun::plan_clearance_now(double t) {
+  if (t != plan_clearance_t) {
+    plan_clearance_cache = field::distance_transform(plan_grid_now(t));
+    plan_clearance_t = t;
+  }
+  return plan_clearance_cache;
+}
+
 bool TeamRun::unstick(std::size_t i, double t, bool ask_others) {
   Agent& a = *agents[i];
   const Vec2 pos = a.body.true_pose().position;
-  BinaryGrid grid = traversable_of(team_grid(team), plan_radius);
-  const field::DistanceField clearance = field::distance_transform(grid);  // without robots
+  const field::DistanceField& clearance = plan_clearance_now(t);  // without robots
+  BinaryGrid grid = plan_grid_now(t);
   (void)mark_others_on(grid, i);
   std::vector<Vec2> path;
   const auto from = nearest_free(grid, pos, 3);
@@ -81,7 +97,7 @@ void TeamRun::end_unstick(Agent& a, double t) {
 // drives straight to the exit cell margin_exit() picks (unstick.hpp), then takes goals again.
 bool TeamRun::margin_escape(Agent& a, double t, Vec2 now) {
   const std::optional<Vec2> exit_at =
-      margin_exit(traversable_of(team_grid(team), plan_radius), blocked, now, body, plan_radius);
+      margin_exit(plan_grid_now(t), blocked, now, body, plan_radius);
   if (!exit_at) return false;
   start_unstick_route(a, {now, *exit_at});
   a.block.on_fired();  // its own 3 s: the clock ran on the route that stopped it

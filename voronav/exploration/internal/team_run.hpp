@@ -26,6 +26,7 @@
 #include "voronav/exploration/internal/agent.hpp"
 #include "voronav/exploration/internal/front_guard.hpp"
 #include "voronav/exploration/internal/team_bans.hpp"
+#include "voronav/field/distance_transform.hpp"
 #include "voronav/mapping/occupancy_map.hpp"
 #include "voronav/planning/bfs.hpp"
 #include "voronav/robot/diff_drive.hpp"
@@ -104,6 +105,11 @@ class TeamRun {
 
   // --- team_run_unstick.cpp ---
   bool unstick(std::size_t i, double t, bool ask_others);
+  /// The team map's planning grid (known free cells inflated by plan_radius) for this step,
+  /// built at most once per step: the team map changes only in sense().
+  [[nodiscard]] const BinaryGrid& plan_grid_now(double t);
+  /// Its clearance (unstick targets), also once per step.
+  [[nodiscard]] const field::DistanceField& plan_clearance_now(double t);
   /// ExplorationOptions::disperse_neighbours: the robots without a route near robot i drive
   /// unstick routes away; they are listed in `leaving` until i has planned its own.
   void disperse_around(std::size_t i, double t);
@@ -137,9 +143,13 @@ class TeamRun {
 
   BinaryGrid trav;  // the frontier allocation's traversable grid
   planning::BfsFlood flood, flood_opt;
-  TeamBans team_bans;                // ExplorationOptions::share_bans
-  std::vector<Vec2> leaf_goals;      // kTreeFrontier: the current tree's leaves
-  std::vector<robot::Disc> others;   // act(): the other robots' discs
+  TeamBans team_bans;               // ExplorationOptions::share_bans
+  std::vector<Vec2> leaf_goals;     // kTreeFrontier: the current tree's leaves
+  std::vector<robot::Disc> others;  // act(): the other robots' discs
+  BinaryGrid plan_grid_cache;       // plan_grid_now(): the grid of step plan_grid_t
+  double plan_grid_t = -1.0;
+  field::DistanceField plan_clearance_cache;
+  double plan_clearance_t = -1.0;
   std::vector<std::size_t> leaving;  // disperse_around(): robots sent away (not planned around)
   bool tree_method, hybrid;
   double tree_start;
