@@ -153,8 +153,11 @@ void TeamRun::map_stall_reach() {
       robot_reach(blocked, o.stall_reach_radius > 0.0 ? o.stall_reach_radius : plan_radius, starts);
 }
 
+// Once none remains it stays so (the team map only learns), so the scan of the whole map runs
+// when a robot first reaches stall_time on one spot while some remains (then it is stalled) and
+// at most once per step, not every step for robots idle when explored.
 bool TeamRun::unknown_space_remains(double t) {
-  if (t == unknown_checked_t) return unknown_remains;
+  if (t == unknown_checked_t || !unknown_remains) return unknown_remains;
   unknown_checked_t = t;
   unknown_remains = unknown_patch_in_reach(g, stall_reach, team.log_odds().data());
   return unknown_remains;
