@@ -144,12 +144,6 @@ TEST(DecentralizedSearch, ABoxedInSourceSensesTheGapsOfItsKnownSpaceAndArrives) 
   EXPECT_LE(on.sensing_walk_m, on.source_travel_m);
 }
 
-}  // namespace
-}  // namespace voronav::sim
-
-namespace voronav::sim {
-namespace {
-
 // Scenario 4, run 15 (data/netsim/s4_run15_window.yaml; issue #13, stop 26). The source has
 // spent its last Search (max_search_attempts) and walks to the destination on its own map. The
 // third change (429.8 s) closes the door ahead; it replans round it and, at 484 s at
