@@ -278,7 +278,7 @@ report::Recording exploration_recording(const exploration::ExplorationResult& re
     if (in.routes[r].size() >= 2)
       rec.paths.push_back({static_cast<int>(r), tree_time, "tree route", in.routes[r]});
   // Events from the run itself: the first tree, every re-plan along a new tree, every leaf
-  // reached, every goal the progress watchdog gave up, every stalled robot.
+  // reached, every goal the progress watchdog gave up, every stalled or idle robot.
   if (in.tree_time >= 0.0)
     rec.events.push_back({in.tree_time, "tree",
                           "the first Voronoi tree is built (" +
@@ -291,12 +291,13 @@ report::Recording exploration_recording(const exploration::ExplorationResult& re
                             d.robot});
   for (const auto& e : in.events) {
     const std::string who = "robot " + std::to_string(e.robot);
-    const std::string text = e.kind == "leaf"       ? who + " reaches a tree leaf"
-                             : e.kind == "watchdog" ? who + " gives up its goal (no progress)"
-                             : e.kind == "stalled"  ? who + " is stalled"
-                             : e.kind == "leaf_skipped"
-                                 ? who + " skips a tree leaf the team already knows"
-                                 : who + " " + e.kind;
+    const std::string text =
+        e.kind == "leaf"           ? who + " reaches a tree leaf"
+        : e.kind == "watchdog"     ? who + " gives up its goal (no progress)"
+        : e.kind == "stalled"      ? who + " is stalled"
+        : e.kind == "idle"         ? who + " is idle: no reachable unknown space is left"
+        : e.kind == "leaf_skipped" ? who + " skips a tree leaf the team already knows"
+                                   : who + " " + e.kind;
     rec.events.push_back({e.t, e.kind, text, e.robot});
   }
   std::stable_sort(

@@ -266,6 +266,7 @@ struct ExplorationEvent {
   double t = 0.0;  ///< [s]
   int robot = -1;
   std::string kind;  ///< "leaf" (a tree leaf reached), "watchdog" (goal given up), "stalled",
+                     ///< "idle" (ExplorationResult::idle_when_explored),
                      ///< "unstick", "margin_escape" (ExplorationOptions::margin_escape),
                      ///< "leaf_skipped" (ExplorationOptions::skip_known_leaves)
 };
@@ -308,7 +309,7 @@ struct ExplorationResult {
   /// space remained (ExplorationOptions::stall_time; each robot counted once).
   int stalled_robots = 0;
   /// Robots that stayed on one spot for stall_time when no reachable unknown space remained
-  /// (their work was done: not stalls; each robot counted once, and not if it stalls later).
+  /// (their work was done: not stalls; each robot counted once; replay event "idle").
   int idle_when_explored = 0;
   /// Of stalled_robots, those declared while the last frontier allocation found no target that
   /// any robot could reach on its planning grid of the team map (frontier methods and

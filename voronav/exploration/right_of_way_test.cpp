@@ -97,6 +97,17 @@ TEST(IdleUnstick, GoallessRobotTurningOnTheSpotIsMovedBeforeItStalls) {
   EXPECT_EQ(done.idle_unsticks, 0);
   EXPECT_EQ(done.stalled_robots, 0);
   EXPECT_EQ(done.idle_when_explored, 1);
+  // The replay says so: one "idle" event, after stall_time on one spot, and no "stalled" one.
+  int idle_events = 0, stalled_events = 0;
+  for (const ExplorationEvent& e : done.recording.events) {
+    idle_events += e.kind == "idle" ? 1 : 0;
+    stalled_events += e.kind == "stalled" ? 1 : 0;
+    if (e.kind == "idle") {
+      EXPECT_GT(e.t, o.stall_time);
+    }
+  }
+  EXPECT_EQ(idle_events, 1);
+  EXPECT_EQ(stalled_events, 0);
   o.stall_reach_radius = 0.05;
   const ExplorationResult off = run_exploration(rooms_with_a_slit(), o);
   EXPECT_LT(off.coverage, 0.99);

@@ -181,12 +181,13 @@ void TeamRun::watch(std::size_t i, double t) {
     if (unknown_space_remains(t)) {
       a.stalled = true;
       ++result.stalled_robots;
-      if (a.idle_counted) --result.idle_when_explored;
       if (o.method != ExplorationMethod::kTree && !team_has_target) ++result.stalled_without_target;
       log_event(t, a, "stalled");
     } else if (!a.idle_counted) {
+      // None remains, and none will again (unknown_space_remains()): not a stall, ever.
       a.idle_counted = true;
       ++result.idle_when_explored;
+      log_event(t, a, "idle");
     }
   }
 }
