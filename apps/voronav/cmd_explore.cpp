@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "cli_common.hpp"
 #include "command.hpp"
@@ -25,6 +26,13 @@ namespace {
 const exploration::ExplorationOptions& library_defaults() {
   static const exploration::ExplorationOptions d{};
   return d;
+}
+
+/// A default of the library as help text shows it: "60", "0.5" (no trailing zeros).
+std::string shown(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
 }
 
 /// An on|off switch's value as the CLI spells it.
@@ -314,7 +322,9 @@ void setup(CLI::App& app) {
              "20 s drives to open space even with --frontier-unstick off (on, ours) or not");
   add_on_off(cmd, "--disperse-neighbours", args->disperse_neighbours,
              "tree: when the watchdog finds a robot on one spot, the robots without a route "
-             "within 1 m of it drive to open space first (ours)");
+             "within " +
+                 shown(library_defaults().disperse_range) +
+                 " m of it drive to open space first (ours)");
   add_on_off(cmd, "--yield-to-held", args->yield_to_held,
              "every method: a robot stopped by a robot in front that is held up itself "
              "backs off whatever their indices (on, ours) or only from a lower index (off)");
@@ -366,8 +376,9 @@ void setup(CLI::App& app) {
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--stall-reach-radius", args->stall_reach_radius,
-                  "Stall rule: a robot idle for 60 s is stalled while unknown space remains where "
-                  "a robot centre fits at this clearance [m] (0 = body radius + clearance)")
+                  "Stall rule: a robot idle for " + shown(library_defaults().stall_time) +
+                      " s is stalled while unknown space remains where a robot centre fits at "
+                      "this clearance [m] (0 = body radius + clearance)")
       ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Random seed (start spot, random driving)")
