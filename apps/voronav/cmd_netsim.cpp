@@ -34,7 +34,7 @@ namespace {
 struct NetsimArgs {
   std::string scenario = "1";
   std::string method = "both";
-  int runs = 16;
+  int runs = sim::kTable7Runs;
   int run = 1;  ///< the paper run --write-scenario writes
   std::uint64_t seed = sim::NetSimOptions{}.seed;
   double loss = sim::NetSimOptions{}.radio.loss;
@@ -45,7 +45,7 @@ struct NetsimArgs {
   long kill_robot = -1;
   std::uint32_t kill_at_step = 0;
   long world_restart_at_step = -1;
-  double dds_timeout_s = 900.0;
+  double dds_timeout_s = dds::DdsRunOptions{}.timeout_s;
   bool json = false;
   std::string mcap;
   // Whether the option was given on the command line (it then overrides a scenario file).
@@ -196,7 +196,8 @@ int paper_id(const std::string& s) {
 Plan make_plan(const NetsimArgs& a) {
   Plan p;
   if (const int id = paper_id(a.scenario)) {
-    if (a.runs < 1 || a.runs > 16) throw Error("--runs", 0, "expected 1..16");
+    if (a.runs < 1 || a.runs > sim::kTable7Runs)
+      throw Error("--runs", 0, "expected 1.." + std::to_string(sim::kTable7Runs));
     p.label = "scenario" + a.scenario;
     p.title = "Scenario " + a.scenario;
     p.runs = a.runs;

@@ -25,7 +25,7 @@ namespace {
 
 struct TopoArgs {
   std::filesystem::path map, out, ground_truth, labels;
-  std::string method = "edt";
+  std::string method{topology::diagram_method_name(topology::TopologyOptions{}.method)};
   std::string metric = "ipa";
   int free_from = 250;
   double min_region_area = topology::TopologyOptions{}.min_region_area;
@@ -51,8 +51,7 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 }
 
 void run(const TopoArgs& a) {
-  if (a.method != "edt" && a.method != "ca")
-    throw Error("--method", 0, "expected edt or ca, got '" + a.method + "'");
+  const topology::DiagramMethod method = topology::parse_diagram_method(a.method, "--method");
   if (a.metric != "ipa" && a.metric != "intersection")
     throw Error("--metric", 0, "expected ipa or intersection, got '" + a.metric + "'");
   io::FloorplanOptions fo;
@@ -61,8 +60,7 @@ void run(const TopoArgs& a) {
   const io::LoadedMap loaded = io::load_map(a.map, fo);
   const BinaryGrid blocked = binarize(loaded.grid);
   topology::TopologyOptions opt;
-  opt.method = a.method == "ca" ? topology::DiagramMethod::kCellularAutomaton
-                                : topology::DiagramMethod::kEdt;
+  opt.method = method;
   opt.min_region_area = a.min_region_area;
   opt.regions_absorb_obstacles = a.absorb_obstacles;
   opt.max_rise_walk = a.max_rise_walk;
@@ -87,7 +85,7 @@ void run(const TopoArgs& a) {
 
   nlohmann::json j;
   j["map"] = a.map.string();
-  j["method"] = a.method;
+  j["method"] = topology::diagram_method_name(method);
   j["width"] = geo.width;
   j["height"] = geo.height;
   j["resolution"] = geo.resolution;

@@ -577,7 +577,9 @@ void time_changes_on_routes(const OfficeWorld& world, NetSimScenario& sc, int ch
 
 NetSimScenario make_paper_run(int id, int run, std::uint64_t seed) {
   const auto ps = paper_scenario(id);
-  if (run < 1 || run > 16) throw Error("run", 0, "expected 1..16, got " + std::to_string(run));
+  if (run < 1 || run > kTable7Runs)
+    throw Error("run", 0,
+                "expected 1.." + std::to_string(kTable7Runs) + ", got " + std::to_string(run));
   OfficeWorldOptions wo;
   wo.width_m = wo.height_m = ps.size_m;
   wo.seed = seed * 1000 + static_cast<std::uint64_t>(id);

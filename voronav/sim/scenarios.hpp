@@ -65,6 +65,9 @@ struct PlacementOptions {
 void time_changes_on_routes(const OfficeWorld& world, NetSimScenario& sc, int changes,
                             double every_s, double robot_radius_m);
 
+/// The runs of Table 7 per paper scenario: 4 placements, each without and with 1, 2, 3 changes.
+inline constexpr int kTable7Runs = 16;
+
 /// Run `run` (1..16) of Table 7 for paper scenario `id`; `seed` varies the worlds. Runs 5..16
 /// get their changes from time_changes_on_routes.
 [[nodiscard]] NetSimScenario make_paper_run(int id, int run, std::uint64_t seed = 1);

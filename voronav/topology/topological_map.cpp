@@ -15,6 +15,16 @@
 #include "voronav/voronoi/voronoi_graph.hpp"
 
 namespace voronav::topology {
+
+std::string_view diagram_method_name(DiagramMethod m) {
+  return m == DiagramMethod::kCellularAutomaton ? "ca" : "edt";
+}
+
+DiagramMethod parse_diagram_method(std::string_view name, std::string_view what) {
+  if (name == "edt") return DiagramMethod::kEdt;
+  if (name == "ca") return DiagramMethod::kCellularAutomaton;
+  throw Error(std::string(what), 0, "expected edt or ca, got '" + std::string(name) + "'");
+}
 namespace {
 
 void check_options(const TopologyOptions& o) {

@@ -45,6 +45,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "voronav/core/grid_map.hpp"
@@ -59,6 +60,11 @@ enum class DiagramMethod : std::uint8_t {
   kEdt,                ///< the EDT-based generalized Voronoi diagram (default)
   kCellularAutomaton,  ///< the paper's labeled Voronoi diagram by cellular automaton
 };
+
+/// The method's name on the command line and in JSON ("edt", "ca").
+[[nodiscard]] std::string_view diagram_method_name(DiagramMethod m);
+/// The method named `name` ("edt" or "ca"); throws voronav::Error naming `what` otherwise.
+[[nodiscard]] DiagramMethod parse_diagram_method(std::string_view name, std::string_view what);
 
 struct TopologyOptions {
   DiagramMethod method = DiagramMethod::kEdt;

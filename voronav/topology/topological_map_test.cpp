@@ -285,6 +285,19 @@ TEST(TopologicalMap, RejectsBadInput) {
   EXPECT_TRUE(full.regions.empty());
 }
 
+TEST(TopologicalMap, DiagramMethodNamesRoundTripAndABadNameIsNamed) {
+  for (const DiagramMethod m : {DiagramMethod::kEdt, DiagramMethod::kCellularAutomaton})
+    EXPECT_EQ(parse_diagram_method(diagram_method_name(m), "--method"), m);
+  EXPECT_EQ(diagram_method_name(TopologyOptions{}.method), "edt");
+  try {
+    (void)parse_diagram_method("voronoi", "--method");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("--method"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'voronoi'"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace voronav::topology
 
