@@ -204,7 +204,7 @@ void repro(int runs) {
 
   std::cout << "### Figure 17: fraction of urgent robots after EDF (" << runs << " runs each)\n\n";
   const std::vector<double> per_agent{0.5, 1.0, 1.5, 2.0, 2.5, 3.0};
-  std::cout << "| N \\ intersections per robot |";
+  std::cout << "| N \\ boxes per robot, P/N (per-agent meetings = 2 P/N) |";
   for (const double x : per_agent)
     std::cout << " " << x << " |";
   std::cout << "\n|---|";
