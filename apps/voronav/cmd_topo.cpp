@@ -33,6 +33,8 @@ struct TopoArgs {
   double max_rise_walk = topology::TopologyOptions{}.max_rise_walk;
   double passage_length = topology::TopologyOptions{}.passage_length;
   double passage_rise_ratio = topology::TopologyOptions{}.passage_rise_ratio;
+  double min_rise = topology::TopologyOptions{}.min_rise;
+  double rise_ratio = topology::TopologyOptions{}.rise_ratio;
   bool passage_bulges = topology::TopologyOptions{}.passage_bulges;
   bool passage_junctions = topology::TopologyOptions{}.passage_junctions;
   bool validate_sides = topology::TopologyOptions{}.validate_sides;
@@ -66,6 +68,8 @@ void run(const TopoArgs& a) {
   opt.max_rise_walk = a.max_rise_walk;
   opt.passage_length = a.passage_length;
   opt.passage_rise_ratio = a.passage_rise_ratio;
+  opt.min_rise = a.min_rise;
+  opt.rise_ratio = a.rise_ratio;
   opt.passage_bulges = a.passage_bulges;
   opt.passage_junctions = a.passage_junctions;
   opt.validate_sides = a.validate_sides;
@@ -237,6 +241,14 @@ void setup(CLI::App& app) {
   cmd->add_option("--max-rise-walk", args->max_rise_walk,
                   "Critical points: the clearance rise is sought up to this far [m] along the "
                   "diagram, across junctions (0 = only on the point's own edge)")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--min-rise", args->min_rise,
+                  "Critical points: a narrowing counts where the clearance rises by at least "
+                  "max(this [m], --rise-ratio x its clearance) on both sides along the diagram")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--rise-ratio", args->rise_ratio, "See --min-rise")
       ->check(non_negative())
       ->capture_default_str();
   cmd->add_option("--passage-length", args->passage_length,

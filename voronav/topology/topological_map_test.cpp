@@ -285,6 +285,51 @@ TEST(TopologicalMap, RejectsBadInput) {
   EXPECT_TRUE(full.regions.empty());
 }
 
+// A hall 10 m x 3 m (0.05 m cells) with a 1 m door at its east end into a second room, and two
+// benches against its long walls in the middle that narrow it by `bench` cells each side.
+BinaryGrid hall_with_benches(int bench) {
+  const int w = 200, h = 60, room = 60;
+  BinaryGrid g(GridGeometry{w + room + 3, h + 2, 0.05, {}}, 0);
+  fill_rect(g, 0, 0, w + room + 2, 0);
+  fill_rect(g, 0, h + 1, w + room + 2, h + 1);
+  fill_rect(g, 0, 0, 0, h + 1);
+  fill_rect(g, w + room + 2, 0, w + room + 2, h + 1);
+  fill_rect(g, w + 1, 0, w + 1, h + 1);                  // the wall between hall and room
+  fill_rect(g, w + 1, h / 2 - 9, w + 1, h / 2 + 10, 0);  // its 1 m door
+  if (bench > 0) {
+    fill_rect(g, 90, 1, 110, bench);
+    fill_rect(g, 90, h + 1 - bench, 110, h);
+  }
+  return g;
+}
+
+int narrowings(const TopologicalMap& m) {
+  int n = 0;
+  for (const auto& cp : m.critical_points)
+    n += cp.separates && !cp.wall_gap && !cp.passage_junction;
+  return n;
+}
+
+TEST(TopologicalMap, BenchesThatNarrowAHallByAFifthDoNotCutItButTheDoorDoes) {
+  // Half-width 30 cells; 6-cell benches leave 24, a rise back to 1.25x (the old 0.25 just
+  // fires), under the default 0.3; 9-cell benches leave 21, a rise to 1.43x.
+  TopologyOptions o;
+  o.passage_length = 0.0;  // the classic rule alone
+  o.validate_sides = false;
+  const TopologicalMap plain = build_topological_map(hall_with_benches(0), o);
+  EXPECT_EQ(plain.regions.size(), 2U);
+  EXPECT_EQ(narrowings(plain), 1);  // the door
+  const TopologicalMap benches = build_topological_map(hall_with_benches(6), o);
+  EXPECT_EQ(benches.regions.size(), 2U);
+  EXPECT_EQ(narrowings(benches), 1);
+  TopologyOptions old = o;
+  old.rise_ratio = 0.25;  // the default until stop 27
+  EXPECT_EQ(narrowings(build_topological_map(hall_with_benches(6), old)), 2);
+  const TopologicalMap deep = build_topological_map(hall_with_benches(9), o);
+  EXPECT_EQ(narrowings(deep), 2);
+  EXPECT_EQ(deep.regions.size(), 3U);
+}
+
 TEST(TopologicalMap, DiagramMethodNamesRoundTripAndABadNameIsNamed) {
   for (const DiagramMethod m : {DiagramMethod::kEdt, DiagramMethod::kCellularAutomaton})
     EXPECT_EQ(parse_diagram_method(diagram_method_name(m), "--method"), m);
