@@ -35,19 +35,8 @@ done
   echo
   echo "## Real maps (data/netsim/*.yaml: scenario files on the ROS maps and the test corridor; one run each)"
   echo
-  echo "| scenario file | robots | method | success | traffic [B] | messages | computation | max per robot | route after [s] | travel [m] |"
-  echo "|---|---|---|---|---|---|---|---|---|---|"
+  "$root/bench/run_netsim_realmaps.sh" "$build"
 } >> "$out"
-for f in turtlebot3_world depot corridor; do
-  "$cli" netsim --scenario "$root/data/netsim/$f.yaml" --method both --out "$tmp/$f" > /dev/null
-  python3 - "$tmp/$f/netsim_$f.json" "$f" >> "$out" <<'PY'
-import json, sys
-for r in json.load(open(sys.argv[1]))["runs"]:
-    print(f"| {sys.argv[2]} | {len(r['robots'])} | {r['method']} | {'yes' if r['success'] else 'no'} | "
-          f"{r['traffic_bytes']} | {r['messages']} | {r['computation']:.3g} | {r['max_robot_computation']:.3g} | "
-          f"{r['route_time_s']:.1f} | {r['travel_m']:.1f} |")
-PY
-done
 {
   echo
   echo "## Scale runs (bench/run_netsim_scale.sh; NetSimOptions::scale_options(), seed 1)"
