@@ -596,7 +596,11 @@ void RobotAgent::repair_timers() {
 /// the source keeps waiting. The first answer taken ends the wait, so later answers to the same
 /// Repair no longer match the source's position and are ignored. Returns whether it was taken.
 bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId from) {
-  if (whole.empty() || route_.empty()) return false;
+  auto dropped = [&] {
+    ++report_.repair_answers_dropped;
+    return false;
+  };
+  if (whole.empty() || route_.empty()) return dropped();
   auto& s = r_;
   const std::size_t done = next_route_index();
   auto free_ahead = [&](const std::vector<VoronoiPoint>& ahead) {
@@ -606,6 +610,7 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
     return !find_break(rest, 0) && seen_near_block(ahead);
   };
   auto taken = [&] {
+    ++report_.repair_answers_taken;
     ++report_.repairs_executed;
     if (from == s.id) ++report_.repairs_own;
     log_repair(true, from == s.id ? "repairs its route with its own detour (Repair executed)"
@@ -615,7 +620,7 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
   if (distance(whole.front().position, s.pos) < 1e-3) {
     // The answer to the source's own Repair: it starts where the source stands (it waits there
     // while blocked) and replaces the rest of the route.
-    if (!repair_out_) return false;  // already answered: the first answer won
+    if (!repair_out_) return dropped();  // already answered: the first answer won
     const std::vector<VoronoiPoint> ahead(whole.begin() + 1, whole.end());
     if (!free_ahead(ahead)) {
       ++report_.repair_answers_refused;
@@ -675,7 +680,7 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
       return true;
     }
   }
-  return false;
+  return dropped();  // the splice point is behind the source or not on its route
 }
 
 void RobotAgent::check_source_route() {

@@ -83,6 +83,11 @@ TEST(DecentralizedRepair, SeveralRobotsKnowADetourAndTheSourceTakesOneAnswer) {
   EXPECT_GE(m.repair_answers, 1);
   EXPECT_GE(m.repair_answers_received, taken);
   EXPECT_LE(m.repair_answers_refused, m.repair_answers_received);
+  // Every answer the source received was taken, refused or dropped (counted once), and the
+  // recorded "takes robot N's detour" events are the answers taken from other robots.
+  EXPECT_EQ(m.repair_answers_received,
+            m.repair_answers_taken + m.repair_answers_refused + m.repair_answers_dropped);
+  EXPECT_EQ(m.repair_answers_taken, taken);
   EXPECT_LE(m.source_repair_requests, m.repair_requests);
   // Every robot handles a Repair once (Table 4 line 1, "New Repair Message"): no robot sends
   // the same Repair twice, so there are at most as many Repair transmissions as robots.

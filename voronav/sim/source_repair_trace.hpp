@@ -19,6 +19,10 @@ namespace voronav::sim {
 struct SourceRepairTrace {
   /// Repaired routes that reached the source, and those it refused as blocked in its own map.
   int repair_answers_received = 0, repair_answers_refused = 0;
+  /// Every received answer is taken, refused or dropped: taken = spliced into the route as it
+  /// came; dropped = neither (a later answer to a Repair already answered, or a detour whose
+  /// splice point is behind the source or not on its route).
+  int repair_answers_taken = 0, repair_answers_dropped = 0;
   /// repair_share_met_blocks: Repairs sent again with cells learned from a refused answer, and
   /// the most cells one of its Repairs carried.
   int repair_reasks = 0, repair_cells_max = 0;
@@ -38,6 +42,8 @@ struct SourceRepairTrace {
     using T = SourceRepairTrace;
     f("repair_answers_received", &T::repair_answers_received);
     f("repair_answers_refused", &T::repair_answers_refused);
+    f("repair_answers_taken", &T::repair_answers_taken);
+    f("repair_answers_dropped", &T::repair_answers_dropped);
     f("repair_reasks", &T::repair_reasks);
     f("repair_cells_max", &T::repair_cells_max);
     f("repairs_own", &T::repairs_own);
