@@ -66,6 +66,7 @@ struct ExploreArgs {
   std::string skip_known_leaves = on_off(library_defaults().skip_known_leaves);
   std::string unknown_leaves_first = on_off(library_defaults().unknown_leaves_first);
   std::string nearest_leaf_next = on_off(library_defaults().nearest_leaf_next);
+  std::string frontiers_after_leaves = on_off(library_defaults().frontiers_after_leaves);
   std::string gain_through_free = on_off(library_defaults().gain_through_free);
   std::string guard{to_string(library_defaults().guard)};
   std::uint64_t seed = library_defaults().seed;
@@ -162,6 +163,7 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                 {"skip_known_leaves", a.skip_known_leaves},
                 {"unknown_leaves_first", a.unknown_leaves_first},
                 {"nearest_leaf_next", a.nearest_leaf_next},
+                {"frontiers_after_leaves", a.frontiers_after_leaves},
                 {"gain_through_free", a.gain_through_free},
                 {"guard", a.guard},
                 {"seed", a.seed},
@@ -214,6 +216,7 @@ void run(const ExploreArgs& a) {
   o.skip_known_leaves = a.skip_known_leaves == "on";
   o.unknown_leaves_first = a.unknown_leaves_first == "on";
   o.nearest_leaf_next = a.nearest_leaf_next == "on";
+  o.frontiers_after_leaves = a.frontiers_after_leaves == "on";
   o.gain_through_free = a.gain_through_free == "on";
   o.guard = exploration::parse_front_guard(a.guard);
   o.seed = a.seed;
@@ -372,6 +375,9 @@ void setup(CLI::App& app) {
              "tree: after figure 9's first round (one leaf per robot) a robot takes the leaf "
              "nearest its last one along the tree from one shared pool (on, ours) or drives "
              "its dealt list i, i + N, ... (off)");
+  add_on_off(cmd, "--frontiers-after-leaves", args->frontiers_after_leaves,
+             "tree: a robot done with its leaves takes coordinated frontier goals (on, ours, "
+             "beyond the paper) or searches reactively (off, the paper)");
   add_on_off(cmd, "--gain-through-free", args->gain_through_free,
              "tree-frontier, --tree-replan robots, --skip-known-leaves: a target's information "
              "gain counts only the unknown cells within 3 m that connect to it through cells not "

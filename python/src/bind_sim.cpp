@@ -399,6 +399,8 @@ void bind_sim(py::module_& m) {
                      "tree (CLI --unknown-leaves-first on|off)")
       .def_readwrite("nearest_leaf_next", &ex::ExplorationOptions::nearest_leaf_next,
                      "tree (CLI --nearest-leaf-next on|off)")
+      .def_readwrite("frontiers_after_leaves", &ex::ExplorationOptions::frontiers_after_leaves,
+                     "tree (CLI --frontiers-after-leaves on|off)")
       .def_readwrite("gain_through_free", &ex::ExplorationOptions::gain_through_free,
                      "targets' information gain (CLI --gain-through-free on|off)")
       .def_readwrite("guard", &ex::ExplorationOptions::guard,

@@ -237,6 +237,13 @@ struct ExplorationOptions {
   /// the nearer to the root), route along the tree. Off: robot i drives its dealt list i, i + N,
   /// ... in order (our reading). `leaves_pooled` counts the leaves taken from the pool.
   bool nearest_leaf_next = false;
+  /// Ours (issue 14, stop 27), kTree only, beyond the paper: a robot done with its dealt leaves
+  /// takes goals from Burgard's coordinated frontier allocation (kCoordinated's, every
+  /// replan_period, among the robots done with their leaves) instead of the paper's reactive
+  /// search; with no frontier left for it, it searches reactively. `frontier_goals` counts them.
+  /// Traced on depot (4 robots, seeds 3, 10, 13): the unknown left at 900 s lies in corners of
+  /// the hall that no leaf faces, and the reactive search reaches them only after 900 s.
+  bool frontiers_after_leaves = false;
   /// The front guard's rule (see FrontGuard); every method.
   FrontGuard guard = FrontGuard::kCorridor;
   double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
