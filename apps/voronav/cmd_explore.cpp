@@ -379,9 +379,10 @@ void setup(CLI::App& app) {
              "tree: a robot done with its leaves takes coordinated frontier goals (on, ours, "
              "beyond the paper) or searches reactively (off, the paper)");
   add_on_off(cmd, "--gain-through-free", args->gain_through_free,
-             "tree-frontier, --tree-replan robots, --skip-known-leaves: a target's information "
-             "gain counts only the unknown cells within 3 m that connect to it through cells not "
-             "known occupied (on, ours) or every unknown cell within 3 m (off)");
+             "tree-frontier, --tree-replan robots, --skip-known-leaves, --unknown-leaves-first: "
+             "a target's information gain counts only the unknown cells within 3 m that connect "
+             "to it through cells not known occupied (on, ours) or every unknown cell within 3 m "
+             "(off)");
   cmd->add_option("--guard", args->guard,
                   "every method: the front guard of a robot on its route stops for anything "
                   "within 0.24 m in a +-40 deg fan (cone) or for a robot there and for a wall only "
