@@ -56,6 +56,7 @@ struct ExploreArgs {
   std::string frontier_unstick = on_off(library_defaults().frontier_unstick);
   std::string idle_unstick = on_off(library_defaults().idle_unstick);
   std::string disperse_neighbours = on_off(library_defaults().disperse_neighbours);
+  std::string clear_way_out = on_off(library_defaults().clear_way_out);
   std::string yield_to_held = on_off(library_defaults().yield_to_held);
   std::string retry_banned = on_off(library_defaults().retry_banned);
   std::string share_bans = on_off(library_defaults().share_bans);
@@ -63,6 +64,9 @@ struct ExploreArgs {
   std::string drop_goalless_routes = on_off(library_defaults().drop_goalless_routes);
   std::string margin_escape = on_off(library_defaults().margin_escape);
   std::string skip_known_leaves = on_off(library_defaults().skip_known_leaves);
+  std::string unknown_leaves_first = on_off(library_defaults().unknown_leaves_first);
+  std::string nearest_leaf_next = on_off(library_defaults().nearest_leaf_next);
+  std::string frontiers_after_leaves = on_off(library_defaults().frontiers_after_leaves);
   std::string gain_through_free = on_off(library_defaults().gain_through_free);
   std::string guard{to_string(library_defaults().guard)};
   std::uint64_t seed = library_defaults().seed;
@@ -157,6 +161,9 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                 {"drop_goalless_routes", a.drop_goalless_routes},
                 {"margin_escape", a.margin_escape},
                 {"skip_known_leaves", a.skip_known_leaves},
+                {"unknown_leaves_first", a.unknown_leaves_first},
+                {"nearest_leaf_next", a.nearest_leaf_next},
+                {"frontiers_after_leaves", a.frontiers_after_leaves},
                 {"gain_through_free", a.gain_through_free},
                 {"guard", a.guard},
                 {"seed", a.seed},
@@ -198,6 +205,7 @@ void run(const ExploreArgs& a) {
   o.unstick = a.unstick == "on";
   o.frontier_unstick = a.frontier_unstick == "on";
   o.disperse_neighbours = a.disperse_neighbours == "on";
+  o.clear_way_out = a.clear_way_out == "on";
   o.idle_unstick = a.idle_unstick == "on";
   o.yield_to_held = a.yield_to_held == "on";
   o.retry_banned = a.retry_banned == "on";
@@ -206,6 +214,9 @@ void run(const ExploreArgs& a) {
   o.drop_goalless_routes = a.drop_goalless_routes == "on";
   o.margin_escape = a.margin_escape == "on";
   o.skip_known_leaves = a.skip_known_leaves == "on";
+  o.unknown_leaves_first = a.unknown_leaves_first == "on";
+  o.nearest_leaf_next = a.nearest_leaf_next == "on";
+  o.frontiers_after_leaves = a.frontiers_after_leaves == "on";
   o.gain_through_free = a.gain_through_free == "on";
   o.guard = exploration::parse_front_guard(a.guard);
   o.seed = a.seed;
@@ -325,6 +336,10 @@ void setup(CLI::App& app) {
              "within " +
                  shown(library_defaults().disperse_range) +
                  " m of it drive to open space first (ours)");
+  add_on_off(cmd, "--clear-way-out", args->clear_way_out,
+             "tree: when the watchdog finds a robot on one spot, the robots whose discs touch "
+             "its way out to open space (planned without the robots) drive to open space first "
+             "(on, ours) or stay (off)");
   add_on_off(cmd, "--yield-to-held", args->yield_to_held,
              "every method: a robot stopped by a robot in front that is held up itself "
              "backs off whatever their indices (on, ours) or only from a lower index (off)");
@@ -352,10 +367,22 @@ void setup(CLI::App& app) {
              "tree: a robot skips its dispatched leaves whose surroundings the team map already "
              "knows (less than --min-leaf-gain unknown) and drives on to its next leaf (on, ours) "
              "or visits every leaf in figure 9's order (off, the paper)");
+  add_on_off(cmd, "--unknown-leaves-first", args->unknown_leaves_first,
+             "tree: a robot drives first to the next of its dispatched leaves that still faces "
+             "unknown space (--min-leaf-gain) and visits the others after, none dropped (on, "
+             "ours), or visits them in figure 9's order (off, the paper)");
+  add_on_off(cmd, "--nearest-leaf-next", args->nearest_leaf_next,
+             "tree: after figure 9's first round (one leaf per robot) a robot takes the leaf "
+             "nearest its last one along the tree from one shared pool (on, ours) or drives "
+             "its dealt list i, i + N, ... (off)");
+  add_on_off(cmd, "--frontiers-after-leaves", args->frontiers_after_leaves,
+             "tree: a robot done with its leaves takes coordinated frontier goals (on, ours, "
+             "beyond the paper) or searches reactively (off, the paper)");
   add_on_off(cmd, "--gain-through-free", args->gain_through_free,
-             "tree-frontier, --tree-replan robots, --skip-known-leaves: a target's information "
-             "gain counts only the unknown cells within 3 m that connect to it through cells not "
-             "known occupied (on, ours) or every unknown cell within 3 m (off)");
+             "tree-frontier, --tree-replan robots, --skip-known-leaves, --unknown-leaves-first: "
+             "a target's information gain counts only the unknown cells within 3 m that connect "
+             "to it through cells not known occupied (on, ours) or every unknown cell within 3 m "
+             "(off)");
   cmd->add_option("--guard", args->guard,
                   "every method: the front guard of a robot on its route stops for anything "
                   "within 0.24 m in a +-40 deg fan (cone) or for a robot there and for a wall only "

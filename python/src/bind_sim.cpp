@@ -379,6 +379,8 @@ void bind_sim(py::module_& m) {
       .def_readwrite("disperse_neighbours", &ex::ExplorationOptions::disperse_neighbours,
                      "tree (CLI --disperse-neighbours on|off)")
       .def_readwrite("disperse_range", &ex::ExplorationOptions::disperse_range, "[m]")
+      .def_readwrite("clear_way_out", &ex::ExplorationOptions::clear_way_out,
+                     "tree (CLI --clear-way-out on|off)")
       .def_readwrite("yield_to_held", &ex::ExplorationOptions::yield_to_held,
                      "every method (CLI --yield-to-held on|off)")
       .def_readwrite("retry_banned", &ex::ExplorationOptions::retry_banned,
@@ -393,6 +395,12 @@ void bind_sim(py::module_& m) {
                      "every method (CLI --margin-escape on|off)")
       .def_readwrite("skip_known_leaves", &ex::ExplorationOptions::skip_known_leaves,
                      "tree (CLI --skip-known-leaves on|off)")
+      .def_readwrite("unknown_leaves_first", &ex::ExplorationOptions::unknown_leaves_first,
+                     "tree (CLI --unknown-leaves-first on|off)")
+      .def_readwrite("nearest_leaf_next", &ex::ExplorationOptions::nearest_leaf_next,
+                     "tree (CLI --nearest-leaf-next on|off)")
+      .def_readwrite("frontiers_after_leaves", &ex::ExplorationOptions::frontiers_after_leaves,
+                     "tree (CLI --frontiers-after-leaves on|off)")
       .def_readwrite("gain_through_free", &ex::ExplorationOptions::gain_through_free,
                      "targets' information gain (CLI --gain-through-free on|off)")
       .def_readwrite("guard", &ex::ExplorationOptions::guard,

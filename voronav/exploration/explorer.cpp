@@ -168,11 +168,13 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"idle_when_explored\":" << r.idle_when_explored
      << ",\"watchdog_events\":" << r.watchdog_events << ",\"leg_replans\":" << r.leg_replans
      << ",\"escapes\":" << r.escapes << ",\"unsticks\":" << r.unsticks
-     << ",\"dispersals\":" << r.dispersals << ",\"idle_unsticks\":" << r.idle_unsticks
-     << ",\"yields\":" << r.yields << ",\"ban_resets\":" << r.ban_resets
-     << ",\"shared_bans\":" << r.shared_bans << ",\"crowd_skips\":" << r.crowd_skips
-     << ",\"route_drops\":" << r.route_drops << ",\"margin_escapes\":" << r.margin_escapes
-     << ",\"leaves_skipped\":" << r.leaves_skipped << ",\"guard_wall_stops\":" << r.guard_wall_stops
+     << ",\"dispersals\":" << r.dispersals << ",\"way_clearances\":" << r.way_clearances
+     << ",\"idle_unsticks\":" << r.idle_unsticks << ",\"yields\":" << r.yields
+     << ",\"ban_resets\":" << r.ban_resets << ",\"shared_bans\":" << r.shared_bans
+     << ",\"crowd_skips\":" << r.crowd_skips << ",\"route_drops\":" << r.route_drops
+     << ",\"margin_escapes\":" << r.margin_escapes << ",\"leaves_skipped\":" << r.leaves_skipped
+     << ",\"leaves_promoted\":" << r.leaves_promoted << ",\"leaves_pooled\":" << r.leaves_pooled
+     << ",\"guard_wall_stops\":" << r.guard_wall_stops
      << ",\"guard_robot_stops\":" << r.guard_robot_stops
      << ",\"tree_time_s\":" << (r.recording.tree_time >= 0.0 ? num(r.recording.tree_time) : "null")
      << ",\"reachable_free_cells\":" << r.reachable_free_cells;

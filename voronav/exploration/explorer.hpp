@@ -144,6 +144,13 @@ struct ExplorationOptions {
   /// mouth 0.3-0.5 m away for 60 s; its own unstick took it deeper in (stalled).
   bool disperse_neighbours = false;
   double disperse_range = 1.0;
+  /// Ours (issue 14, stop 27), kTree: disperse_neighbours aimed at the robots in the way. When
+  /// the progress watchdog fires for a robot, its unstick route is planned as if no other robot
+  /// were there (the way out to open space); the robots (not on an unstick route themselves)
+  /// whose discs touch that way drive an unstick route to open space first, and the stuck robot's
+  /// own unstick route may pass where they stood (`way_clearances` counts the robots moved).
+  /// Robots beside it but not in its way keep their search.
+  bool clear_way_out = false;
   /// The same for the frontier methods; off by default: on willow (16 robots) it stalled more
   /// robots (frontier 3 and 7 against 0 and 0; an unstick route stopped by the front guard kept
   /// the robot out of the allocation until the watchdog fired again). After the block clock fix
@@ -216,6 +223,27 @@ struct ExplorationOptions {
   /// order deals the deep leaves that face unexplored space last, after every shallow leaf in
   /// explored space, so coverage stays flat for minutes. `leaves_skipped` counts the skips.
   bool skip_known_leaves = false;
+  /// Ours (issue 14, stop 27), kTree only: a robot about to drive a tree leg (at the dispatch and
+  /// after each leaf) drives first to the next of its dealt leaves that still faces unknown space
+  /// (at least min_leaf_gain of the cells within gain_radius unknown), on a route planned from
+  /// where it stands (tree grid: only known obstacles block); the leaves it passes over stay in
+  /// its list, in figure 9's order, and are visited after. Unlike skip_known_leaves no dealt leaf
+  /// is dropped. `leaves_promoted` counts the leaves moved ahead.
+  bool unknown_leaves_first = false;
+  /// Ours (issue 14, stop 27), kTree only; another reading of figure 9's "then the next nearest"
+  /// (다음으로 가까운 거리의). At the dispatch every robot takes the first leaf of its figure 9
+  /// list (the N leaves nearest the root, one each, as the paper); the other leaves form one pool,
+  /// and a robot done with a leaf takes from it the leaf nearest its last one along the tree (ties:
+  /// the nearer to the root), route along the tree. Off: robot i drives its dealt list i, i + N,
+  /// ... in order (our reading). `leaves_pooled` counts the leaves taken from the pool.
+  bool nearest_leaf_next = false;
+  /// Ours (issue 14, stop 27), kTree only, beyond the paper: a robot done with its dealt leaves
+  /// takes goals from Burgard's coordinated frontier allocation (kCoordinated's, every
+  /// replan_period, among the robots done with their leaves) instead of the paper's reactive
+  /// search; with no frontier left for it, it searches reactively. `frontier_goals` counts them.
+  /// Traced on depot (4 robots, seeds 3, 10, 13): the unknown left at 900 s lies in corners of
+  /// the hall that no leaf faces, and the reactive search reaches them only after 900 s.
+  bool frontiers_after_leaves = false;
   /// The front guard's rule (see FrontGuard); every method.
   FrontGuard guard = FrontGuard::kCorridor;
   double replan_period = 2.0;   ///< [s] frontier targets are re-assigned this often
@@ -318,20 +346,23 @@ struct ExplorationResult {
   int stalled_without_target = 0;
   /// Goals given up by the progress watchdog (no progress for stall_time / 3).
   int watchdog_events = 0;
-  int leg_replans = 0;    ///< tree legs re-planned around robots (TreeLegReplan::kAroundRobots)
-  int escapes = 0;        ///< corridor escapes of the reactive controllers (AvoidEscape::kCorridor)
-  int unsticks = 0;       ///< unstick routes started (ExplorationOptions::unstick)
-  int dispersals = 0;     ///< of them, robots sent away (ExplorationOptions::disperse_neighbours)
-  int idle_unsticks = 0;  ///< of those, by ExplorationOptions::idle_unstick
-  int yields = 0;         ///< back-offs from a held-up robot of higher index (yield_to_held)
-  int ban_resets = 0;     ///< goalless robots that forgot their soft bans (retry_banned)
+  int leg_replans = 0;  ///< tree legs re-planned around robots (TreeLegReplan::kAroundRobots)
+  int escapes = 0;      ///< corridor escapes of the reactive controllers (AvoidEscape::kCorridor)
+  int unsticks = 0;     ///< unstick routes started (ExplorationOptions::unstick)
+  int way_clearances = 0;  ///< robots moved out of a stuck robot's way (clear_way_out)
+  int dispersals = 0;      ///< of them, robots sent away (ExplorationOptions::disperse_neighbours)
+  int idle_unsticks = 0;   ///< of those, by ExplorationOptions::idle_unstick
+  int yields = 0;          ///< back-offs from a held-up robot of higher index (yield_to_held)
+  int ban_resets = 0;      ///< goalless robots that forgot their soft bans (retry_banned)
   /// Reached goals banned for the whole team as out of sight of their target (share_bans).
   int shared_bans = 0;
   /// (robot, frontier) pairs left out of the nearest-frontier choice as crowded (crowd_limit).
   int crowd_skips = 0;
-  int route_drops = 0;     ///< routes dropped by goalless robots (drop_goalless_routes)
-  int margin_escapes = 0;  ///< watchdog escapes out of the planning margin (margin_escape)
-  int leaves_skipped = 0;  ///< tree leaves skipped as already known (skip_known_leaves)
+  int route_drops = 0;      ///< routes dropped by goalless robots (drop_goalless_routes)
+  int margin_escapes = 0;   ///< watchdog escapes out of the planning margin (margin_escape)
+  int leaves_skipped = 0;   ///< tree leaves skipped as already known (skip_known_leaves)
+  int leaves_pooled = 0;    ///< tree leaves taken from the shared pool (nearest_leaf_next)
+  int leaves_promoted = 0;  ///< tree leaves driven to ahead of their turn (unknown_leaves_first)
   /// Front guard stops (a robot that drove forward the step before and is stopped now): by a wall
   /// and by a robot (the right of way applies).
   int guard_wall_stops = 0;

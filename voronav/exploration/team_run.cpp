@@ -308,6 +308,11 @@ void TeamRun::decide(double t) {
       check_tree_routes(t);
       next_check = t + o.replan_period;
     }
+    // ExplorationOptions::frontiers_after_leaves (ours): the robots done with their leaves.
+    if (dispatched && o.frontiers_after_leaves && t >= next_replan) {
+      replan_frontiers(t);
+      next_replan = t + o.replan_period;
+    }
     if (dispatched && o.tree_replan == TreeReplan::kFromRobots)
       for (std::size_t i = 0; i < agents.size(); ++i)
         if (agents[i]->tree_done && !agents[i]->on_tree && t >= agents[i]->retry_at &&

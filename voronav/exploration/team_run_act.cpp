@@ -212,6 +212,7 @@ void TeamRun::watchdog_fires(std::size_t i, double t, Vec2 now) {
   }
   a.reactive_until = t + 10.0;
   if (o.disperse_neighbours && o.method == ExplorationMethod::kTree) disperse_around(i, t);
+  if (o.clear_way_out && o.method == ExplorationMethod::kTree) clear_way_out(i, t);
   // ExplorationOptions::margin_escape: inside the planning margin, out of it first.
   if (o.margin_escape && margin_escape(a, t, now)) {
     leaving.clear();

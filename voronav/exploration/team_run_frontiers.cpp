@@ -35,8 +35,12 @@ void TeamRun::rebuild_hybrid_tree(double t) {
 // block) and ranks every target by its information gain (the unknown fraction around it).
 void TeamRun::replan_frontiers(double t) {
   std::vector<std::size_t> active;
+  // kTree (ExplorationOptions::frontiers_after_leaves): only the robots done with their leaves.
+  const bool tree_done_only = o.method == ExplorationMethod::kTree;
   for (std::size_t i = 0; i < agents.size(); ++i)
-    if (!agents[i]->unsticking) active.push_back(i);
+    if (!agents[i]->unsticking &&
+        (!tree_done_only || (agents[i]->tree_done && !agents[i]->on_tree)))
+      active.push_back(i);
   const OccupancyGrid tg = team_grid(team);
   trav = traversable_of(tg, plan_radius);
   std::vector<Frontier> fr = find_frontiers(tg, trav, o.frontier);

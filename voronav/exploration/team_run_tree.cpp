@@ -15,6 +15,8 @@ namespace voronav::exploration::internal {
 // The next leg of a robot's tree route, or (none left) the end of its dispatch.
 void TeamRun::start_leg(Agent& a, double t, const TreeGrids* built) {
   if (o.skip_known_leaves) skip_known_leaves(a, t, built);
+  if (o.unknown_leaves_first) unknown_leaves_first(a, t, built);
+  if (o.nearest_leaf_next && a.legs.empty()) take_nearest_leaf(a, built);
   if (!a.legs.empty()) {
     start_follow(a, a.legs.front());
     a.on_tree = true;
@@ -47,6 +49,81 @@ void TeamRun::skip_known_leaves(Agent& a, double t, const TreeGrids* built) {
   const BinaryGrid& opt = built ? built->opt : own_opt.emplace(tree_grid(tg, plan_radius));
   while (!a.legs.empty() && !leg_from_here(a, opt))
     a.legs.pop_front();
+}
+
+// ExplorationOptions::unknown_leaves_first (ours): the first of the robot's legs whose leaf still
+// faces unknown space moves ahead of the others (their order stays figure 9's). A leg that does
+// not start where the robot stands (moved ahead, or after a leaf given up) is planned afresh from
+// here; a leaf out of reach from here is given up.
+void TeamRun::unknown_leaves_first(Agent& a, double t, const TreeGrids* built) {
+  if (a.legs.empty()) return;
+  std::optional<OccupancyGrid> own_tg;
+  const OccupancyGrid& tg = built ? built->team : own_tg.emplace(team_grid(team));
+  std::optional<BinaryGrid> own_opt;
+  const Vec2 pos = a.body.true_pose().position;
+  while (!a.legs.empty()) {
+    std::size_t k = 0;
+    while (k < a.legs.size() && unknown_fraction(tg, a.legs[k].back()) < o.min_leaf_gain)
+      ++k;
+    if (k > 0 && k < a.legs.size()) {
+      std::vector<Vec2> leg = std::move(a.legs[k]);
+      a.legs.erase(a.legs.begin() + static_cast<std::ptrdiff_t>(k));
+      a.legs.push_front(std::move(leg));
+      ++result.leaves_promoted;
+      log_event(t, a, "leaf_promoted");
+    }
+    if (distance(pos, a.legs.front().front()) <= kLegJoin) return;
+    const BinaryGrid& opt =
+        built ? built->opt : (own_opt ? *own_opt : own_opt.emplace(tree_grid(tg, plan_radius)));
+    if (leg_from_here(a, opt)) return;
+    a.legs.pop_front();  // out of reach from here: given up
+  }
+}
+
+// ExplorationOptions::nearest_leaf_next (ours): the pooled leaf nearest the robot's last leaf along
+// the tree (the route up to the lowest common ancestor and down), its route along the tree; from
+// where the robot stands when that is not at its last leaf (a leaf given up). A leaf out of reach
+// from here goes back to the pool for the others.
+bool TeamRun::take_nearest_leaf(Agent& a, const TreeGrids* built) {
+  const VoronoiTree& tree = result.recording.tree;
+  if (leaf_pool.empty() || tree.empty() || a.tree_node < 0) return false;
+  const auto along = [&](int from, int to) {
+    const std::vector<int> r = tree.node_route(from, to);
+    double d = 0.0;
+    for (std::size_t k = 1; k < r.size(); ++k)
+      d += std::abs(tree.nodes[static_cast<std::size_t>(r[k])].depth -
+                    tree.nodes[static_cast<std::size_t>(r[k - 1])].depth);
+    return d;
+  };
+  // (distance along the tree, pool index); the pool is in order of distance from the root, so
+  // the stable sort breaks ties toward the root.
+  std::vector<std::pair<double, std::size_t>> order;
+  for (std::size_t k = 0; k < leaf_pool.size(); ++k)
+    order.emplace_back(along(a.tree_node, leaf_pool[k]), k);
+  std::stable_sort(order.begin(), order.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::optional<OccupancyGrid> own_tg;
+  std::optional<BinaryGrid> own_opt;
+  const Vec2 pos = a.body.true_pose().position;
+  for (const auto& [d, k] : order) {
+    const int leaf = leaf_pool[k];
+    a.legs.push_back(tree.waypoints(a.tree_node, leaf));
+    if (distance(pos, a.legs.front().front()) > kLegJoin) {
+      const OccupancyGrid& tg =
+          built ? built->team : (own_tg ? *own_tg : own_tg.emplace(team_grid(team)));
+      const BinaryGrid& opt =
+          built ? built->opt : (own_opt ? *own_opt : own_opt.emplace(tree_grid(tg, plan_radius)));
+      if (!leg_from_here(a, opt)) {
+        a.legs.clear();
+        continue;
+      }
+    }
+    a.tree_node = leaf;
+    leaf_pool.erase(leaf_pool.begin() + static_cast<std::ptrdiff_t>(k));
+    ++result.leaves_pooled;
+    return true;
+  }
+  return false;
 }
 
 // The robot's next leg planned afresh on `opt` from where it stands to the same leaf (within
@@ -97,7 +174,17 @@ bool TeamRun::dispatch_first(double t) {
   const std::vector<int> leaves = tree.leaves_by_distance();
   if (tree.empty() || leaves.empty()) return false;
   std::vector<std::vector<int>> dispatch = dispatch_leaves(leaves, o.robots);
+  if (o.nearest_leaf_next) {
+    // Figure 9's first round (the N leaves nearest the root, one per robot); the rest pooled in
+    // order of distance from the root.
+    leaf_pool.clear();
+    for (std::size_t k = std::min(leaves.size(), dispatch.size()); k < leaves.size(); ++k)
+      leaf_pool.push_back(leaves[k]);
+    for (auto& list : dispatch)
+      if (list.size() > 1) list.erase(list.begin() + 1, list.end());
+  }
   const Vec2 root = tree.nodes[static_cast<std::size_t>(tree.root)].position;
+  result.recording.tree = tree;  // nearest_leaf_next takes leaves along it from start_leg on
   std::vector<std::vector<Vec2>> routes;
   for (std::size_t i = 0; i < agents.size(); ++i) {
     Agent& a = *agents[i];
@@ -128,6 +215,7 @@ bool TeamRun::dispatch_first(double t) {
     routes.push_back(std::move(full));
     a.tree_done = false;
     a.reactive_until = 0.0;
+    a.tree_node = dispatch[i].empty() ? -1 : dispatch[i].front();
     if (a.legs.empty()) {
       a.tree_done = true;
       continue;

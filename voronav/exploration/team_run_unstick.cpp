@@ -80,6 +80,36 @@ void TeamRun::disperse_around(std::size_t i, double t) {
   }
 }
 
+// ExplorationOptions::clear_way_out (ours, kTree): robot i's way out is the unstick route it would
+// take if no other robot were there; the robots whose discs (2 body radii + 5 cm from its centre
+// line, the robot-aware planning's disc) touch it drive to open space first, and i then plans its
+// own unstick route without their discs. Traced on willow (16 robots, tree, seeds 1 and 12): a
+// robot in a 1.3 m wide dead-end pocket had robots of the random search at its mouth, and its
+// unstick route, planned around them, led deeper in or was not found.
+void TeamRun::clear_way_out(std::size_t i, double t) {
+  const Vec2 pos = agents[i]->body.true_pose().position;
+  const BinaryGrid& grid = plan_grid_now(t);  // the team map's planning grid, without robots
+  const auto from = nearest_free(grid, pos, 3);
+  if (!from || flood.flood(grid, *from, planning::Connectivity::k8) == 0) return;
+  const std::optional<Cell> best = unstick_target(grid, flood, plan_clearance_now(t));
+  if (!best) return;
+  std::vector<Vec2> way = descend(grid, flood, *best);
+  way.insert(way.begin(), pos);
+  // The robots not on an unstick route already, by index, and their positions.
+  std::vector<std::size_t> ids;
+  std::vector<Vec2> at;
+  for (std::size_t j = 0; j < agents.size(); ++j)
+    if (j != i && !agents[j]->unsticking) {
+      ids.push_back(j);
+      at.push_back(agents[j]->body.true_pose().position);
+    }
+  for (const std::size_t k : robots_in_way(way, at, 2.0 * body + 0.05))
+    if (unstick(ids[k], t, false)) {
+      ++result.way_clearances;
+      leaving.push_back(ids[k]);
+    }
+}
+
 // The end of an unstick route: a robot with tree legs left goes on with the next one, planned
 // from where it is; else it searches reactively (and the frontier methods allocate again).
 void TeamRun::end_unstick(Agent& a, double t) {

@@ -154,3 +154,28 @@ TEST(Unstick, SameTargetAsAWholeGridScan) {
 
 }  // namespace
 }  // namespace voronav::exploration
+
+namespace voronav::exploration {
+namespace {
+
+// ExplorationOptions::clear_way_out (issue 14, stop 27): which robots stand in a stuck robot's
+// way out. Way (0, 0) -> (2, 0) -> (2, 2), reach 0.29 m (two body radii + 5 cm).
+TEST(ClearWayOut, RobotsWhoseDiscsTouchTheWay) {
+  const std::vector<Vec2> way{{0.0, 0.0}, {2.0, 0.0}, {2.0, 2.0}};
+  const std::vector<Vec2> robots{
+      {1.0, 0.2},    // 0: 0.2 m beside the first leg
+      {1.0, 0.35},   // 1: 0.35 m beside it: not in the way
+      {2.25, 1.0},   // 2: 0.25 m beside the second leg
+      {-0.2, 0.1},   // 3: behind the start, 0.224 m from it
+      {2.0, 2.3},    // 4: 0.3 m beyond the end: not in the way
+      {2.15, -0.2},  // 5: 0.25 m from the corner (2, 0)
+      {0.5, -0.3}};  // 6: exactly 0.3 m from the first leg: not in the way
+  EXPECT_EQ(robots_in_way(way, robots, 0.29), (std::vector<std::size_t>{0, 2, 3, 5}));
+  EXPECT_EQ(robots_in_way(way, robots, 0.31), (std::vector<std::size_t>{0, 2, 3, 4, 5, 6}));
+  // A way of one point (the robot stands at its target): the disc around it.
+  EXPECT_EQ(robots_in_way({{1.0, 0.0}}, robots, 0.29), (std::vector<std::size_t>{0}));
+  EXPECT_TRUE(robots_in_way({}, robots, 0.29).empty());
+}
+
+}  // namespace
+}  // namespace voronav::exploration

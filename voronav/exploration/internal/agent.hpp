@@ -48,9 +48,10 @@ struct Agent {
   bool on_tree = false;         // following a leg of a tree dispatch
   std::deque<std::vector<Vec2>> legs;  // tree legs still to drive, each ending at a leaf
   bool tree_done = false;              // its dispatched leaves are done (or given up)
-  bool goal_leaf = false;              // kTreeFrontier: the goal is a tree leaf
-  double retry_at = 0.0;               // [s] TreeReplan::kFromRobots: next attempt
-  Vec2 anchor;                         // stall watch: where it has stayed since anchor_t
+  int tree_node = -1;      // the tree node of its last leaf (ExplorationOptions::nearest_leaf_next)
+  bool goal_leaf = false;  // kTreeFrontier: the goal is a tree leaf
+  double retry_at = 0.0;   // [s] TreeReplan::kFromRobots: next attempt
+  Vec2 anchor;             // stall watch: where it has stayed since anchor_t
   double anchor_t = 0.0;
   Vec2 wd_anchor;  // progress watchdog (give up a goal when stuck)
   double wd_t = 0.0;

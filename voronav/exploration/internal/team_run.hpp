@@ -90,6 +90,12 @@ class TeamRun {
   };
   void start_leg(Agent& a, double t, const TreeGrids* built = nullptr);
   void skip_known_leaves(Agent& a, double t, const TreeGrids* built);
+  /// A leg starting farther than this from the robot is planned afresh (unknown_leaves_first).
+  static constexpr double kLegJoin = 1.0;  // [m]
+  void unknown_leaves_first(Agent& a, double t, const TreeGrids* built);
+  /// ExplorationOptions::nearest_leaf_next: a robot without legs takes the pooled leaf nearest
+  /// its last one along the tree (false: none left that it can reach).
+  bool take_nearest_leaf(Agent& a, const TreeGrids* built);
   bool leg_from_here(Agent& a, const BinaryGrid& opt);
   void finish_leg(Agent& a, double t, const TreeGrids* built = nullptr);
   void record_dispatch(double t, std::size_t i, bool first, Vec2 root,
@@ -113,6 +119,10 @@ class TeamRun {
   /// ExplorationOptions::disperse_neighbours: the robots without a route near robot i drive
   /// unstick routes away; they are listed in `leaving` until i has planned its own.
   void disperse_around(std::size_t i, double t);
+  /// ExplorationOptions::clear_way_out: the robots whose discs touch robot i's way out (its
+  /// unstick route planned without the robots) drive unstick routes away; they are listed in
+  /// `leaving` until i has planned its own.
+  void clear_way_out(std::size_t i, double t);
   void end_unstick(Agent& a, double t);
   /// ExplorationOptions::margin_escape: true when robot a at `now` started a route out of the
   /// planning margin.
@@ -153,7 +163,8 @@ class TeamRun {
   std::vector<std::size_t> leaving;  // disperse_around(): robots sent away (not planned around)
   bool tree_method, hybrid;
   double tree_start;
-  bool dispatched = false;  // the single dispatch of the first tree has happened
+  bool dispatched = false;     // the single dispatch of the first tree has happened
+  std::vector<int> leaf_pool;  // nearest_leaf_next: the first tree's leaves not yet taken
   double next_tree_time, next_replan = 0.0, next_check = 0.0;
   /// The last frontier allocation found a target (frontier or leaf) some robot could reach
   /// (ExplorationResult::stalled_without_target).
