@@ -303,6 +303,34 @@ TEST(DecentralizedRepair, TheSourceRepairsARefusedAnswerOnItsOwnMap) {
             on.repairs_own + on.repair_answers_fixed + on.repair_answers_fixed_walk);
 }
 
+// Every Repair answer the source receives is taken, refused or dropped (issue #13, stop 27:
+// repair_answers_taken, repair_answers_dropped). turtlebot3_world.yaml has the one answer that was
+// neither taken nor refused before the counters: robot 1's detour to robot 2's own Repair reaches
+// the source after it has passed the detour's first point (route point 2), so splice_route drops
+// it. s2_run10_boxed_in.yaml has answers taken and refused, depot.yaml all three kinds.
+TEST(DecentralizedRepair, EveryAnswerTheSourceReceivesIsTakenRefusedOrDropped) {
+  const auto tb3 = [] {
+    const auto f = saved_decentralized_run("turtlebot3_world.yaml");
+    return run_netsim(f.scenario, f.options).metrics;
+  }();
+  ASSERT_TRUE(tb3.success);
+  EXPECT_EQ(tb3.repair_answers_received, 1);
+  EXPECT_EQ(tb3.repair_answers_dropped, 1) << "its splice point is behind the source";
+  EXPECT_EQ(tb3.repair_answers_taken, 0);
+  EXPECT_EQ(tb3.repair_answers_refused, 0);
+  for (const char* name : {"s2_run10_boxed_in.yaml", "depot.yaml"}) {
+    const auto f = saved_decentralized_run(name);
+    const auto m = run_netsim(f.scenario, f.options).metrics;
+    EXPECT_GE(m.repair_answers_taken, 1) << name;
+    EXPECT_GE(m.repair_answers_refused, 1) << name;
+    EXPECT_EQ(m.repair_answers_received,
+              m.repair_answers_taken + m.repair_answers_refused + m.repair_answers_dropped)
+        << name;
+    // An answer taken is a Repair executed; the source's own detours and fixed answers are too.
+    EXPECT_GE(m.repairs_executed, m.repair_answers_taken) << name;
+  }
+}
+
 // repair_expand_hops (issue #13, stop 22): scenario 3, run 7 (data/netsim/s3_run7_unanswered.yaml).
 // No robot within repair_hops (2) of the blocked source knows a way round the change: no answer
 // comes, no Repair executes and the source replans on its own map. With the expanding ring, the
