@@ -160,6 +160,8 @@ nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
                 {"crowd_limit", a.crowd_limit},
                 {"drop_goalless_routes", a.drop_goalless_routes},
                 {"margin_escape", a.margin_escape},
+                {"disperse_neighbours", a.disperse_neighbours},
+                {"clear_way_out", a.clear_way_out},
                 {"skip_known_leaves", a.skip_known_leaves},
                 {"unknown_leaves_first", a.unknown_leaves_first},
                 {"nearest_leaf_next", a.nearest_leaf_next},
@@ -399,7 +401,9 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--min-leaf-gain", args->min_leaf_gain,
                   "tree-frontier, --tree-replan robots: a leaf is a goal only when at least this "
-                  "fraction of the cells within 3 m of it is unknown (1 = leaves never qualify)")
+                  "fraction of the cells within 3 m of it is unknown (1 = leaves never qualify); "
+                  "--skip-known-leaves skips and --unknown-leaves-first passes over a dealt leaf "
+                  "below it")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--stall-reach-radius", args->stall_reach_radius,

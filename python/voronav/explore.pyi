@@ -85,6 +85,7 @@ class Options:
     idle_unstick: bool  # frontier methods, goalless robots
     disperse_neighbours: bool  # tree: robots without a route near a watchdog-stuck robot move away
     disperse_range: float  # [m]
+    clear_way_out: bool  # tree: robots in a watchdog-stuck robot's way out to open space move first (off)
     yield_to_held: bool
     retry_banned: bool  # frontier methods
     share_bans: bool  # frontier methods: a reached goal no robot can observe is banned for all
@@ -92,6 +93,9 @@ class Options:
     drop_goalless_routes: bool  # frontier methods
     margin_escape: bool  # every method: a watchdog-stuck robot in the planning margin drives out first (on)
     skip_known_leaves: bool  # tree: skip dispatched leaves the team map already knows (off)
+    unknown_leaves_first: bool  # tree: drive first to the next dealt leaf that faces unknown space (off)
+    nearest_leaf_next: bool  # tree: after figure 9's first round, the pooled leaf nearest along the tree (off)
+    frontiers_after_leaves: bool  # tree: coordinated frontier goals once the leaves are done (off)
     gain_through_free: bool  # a target's gain counts only unknown cells it connects to (on)
     guard: FrontGuard  # front guard: cone | corridor (default)
     controller: ControllerOptions  # tree's reactive search

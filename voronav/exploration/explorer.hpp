@@ -105,7 +105,8 @@ struct ExplorationOptions {
   double hybrid_tree_start_time = 10.0;
   double hybrid_tree_period = 10.0;  ///< [s] kTreeFrontier: the tree is rebuilt this often
   /// A leaf "looks into unknown space" when at least this fraction of the cells within
-  /// gain_radius of it is unknown in the team map (kTreeFrontier, kFromRobots).
+  /// gain_radius of it is unknown in the team map (kTreeFrontier, kFromRobots, and kTree's
+  /// skip_known_leaves and unknown_leaves_first).
   double min_leaf_gain = 0.15;
   double gain_radius = 3.0;  ///< [m] (the laser range)
   /// Ours (issue 14, stop 24): a target's gain counts only the unknown cells within gain_radius
@@ -331,8 +332,9 @@ struct ExplorationResult {
   int trees = 0;           ///< trees built (first dispatch and re-plans)
   int dispatches = 0;      ///< robot dispatches along a tree (first + re-plans)
   int leaves_reached = 0;  ///< dispatched (kTree) or allocated (kTreeFrontier) leaves reached
-  int frontier_goals = 0;  ///< frontier goals assigned (frontier methods, kTreeFrontier)
-  int leaf_goals = 0;      ///< tree leaves assigned as goals by the allocation (kTreeFrontier)
+  /// Frontier goals assigned (frontier methods, kTreeFrontier, kTree's frontiers_after_leaves).
+  int frontier_goals = 0;
+  int leaf_goals = 0;  ///< tree leaves assigned as goals by the allocation (kTreeFrontier)
   /// Robots that stayed within stall_distance of one spot for stall_time while reachable unknown
   /// space remained (ExplorationOptions::stall_time; each robot counted once).
   int stalled_robots = 0;
