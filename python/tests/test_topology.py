@@ -55,6 +55,23 @@ def test_critical_line_options_equal_cli(data, cli):
     assert vn.topology.TopologyOptions(basis_across=True).basis_across
 
 
+def test_rise_options_equal_cli(data, cli):
+    # The classic rule's rise (`--rise-ratio`, `--min-rise`, stop 27): the same regions and critical
+    # points from Python as from the CLI, and the old ratio 0.25 cuts the furnished plan's corridor
+    # between its benches again (docs/reproductions/topology.md, "The rise ratio").
+    plan = str(data / "floorplans/lab_ipa_furnitures.png")
+    blocked = vn.binarize(vn.io.load_floorplan(plan, resolution=0.05, free_from=250, occupied_below=250))
+    assert vn.topology.TopologyOptions().rise_ratio == pytest.approx(0.3)
+    default = cli("topo", "--map", plan)
+    for args, kwargs in ((("--rise-ratio", "0.25"), {"rise_ratio": 0.25}),
+                         (("--min-rise", "0.6"), {"min_rise": 0.6})):
+        topo = vn.topology.build_topological_map(blocked, vn.topology.TopologyOptions(**kwargs))
+        out = cli("topo", "--map", plan, *args)
+        assert len(topo.regions) == out["regions"], args
+        assert len(topo.critical_points) == len(out["critical_points"]), args
+        assert len(out["critical_points"]) != len(default["critical_points"]), args
+
+
 def test_wall_openings_equal_cli(data, cli):
     # Openings in wall lines (on by default): NLB's open room fronts and wall stubs give wall-gap
     # critical lines; the same from Python as from the CLI; none when turned off.
