@@ -229,7 +229,8 @@ struct ExplorationOptions {
   /// (at least min_leaf_gain of the cells within gain_radius unknown), on a route planned from
   /// where it stands (tree grid: only known obstacles block); the leaves it passes over stay in
   /// its list, in figure 9's order, and are visited after. Unlike skip_known_leaves no dealt leaf
-  /// is dropped. `leaves_promoted` counts the leaves moved ahead.
+  /// is dropped for being known; a leaf out of reach from where the robot stands is given up (not
+  /// counted). `leaves_promoted` counts the leaves moved ahead.
   bool unknown_leaves_first = false;
   /// Ours (issue 14, stop 27), kTree only; another reading of figure 9's "then the next nearest"
   /// (다음으로 가까운 거리의). At the dispatch every robot takes the first leaf of its figure 9

@@ -34,7 +34,7 @@ TEST(UnknownLeavesFirst, DepotSeed13ReachesTheUnexploredEndSooner) {
   EXPECT_GE(first.leaves_promoted, 1);  // the mechanism fired
   EXPECT_GT(first.coverage, 0.90);      // 93.8 %
   EXPECT_EQ(first.trees, 1);            // the same single dispatch
-  EXPECT_EQ(first.leaves_skipped, 0);   // no leaf is dropped
+  EXPECT_EQ(first.leaves_skipped, 0);   // skip_known_leaves stays off: no leaf skipped as known
   EXPECT_EQ(first.collisions, 0);
   int logged = 0;
   for (const ExplorationEvent& e : first.recording.events)
