@@ -297,7 +297,10 @@ report::Recording exploration_recording(const exploration::ExplorationResult& re
         : e.kind == "stalled"      ? who + " is stalled"
         : e.kind == "idle"         ? who + " is idle: no reachable unknown space is left"
         : e.kind == "leaf_skipped" ? who + " skips a tree leaf the team already knows"
-                                   : who + " " + e.kind;
+        : e.kind == "leaf_promoted"
+            ? who + " drives first to a dealt tree leaf that still faces unknown space"
+        : e.kind == "frontier_goal" ? who + " is done with its leaves and takes a frontier goal"
+                                    : who + " " + e.kind;
     rec.events.push_back({e.t, e.kind, text, e.robot});
   }
   std::stable_sort(

@@ -195,6 +195,7 @@ void TeamRun::replan_frontiers(double t) {
     path.insert(path.begin(), a.body.true_pose().position);
     a.goal = tp;
     ++result.frontier_goals;
+    if (tree_done_only) log_event(t, a, "frontier_goal");  // frontiers_after_leaves (replay)
     start_follow(a, simplify(trav, path));
   }
 }

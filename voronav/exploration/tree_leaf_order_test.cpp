@@ -104,6 +104,19 @@ TEST(FrontiersAfterLeaves, DepotSeed15ReachesTheCornerNoLeafFaces) {
   ASSERT_TRUE(frontiers.t99_s.has_value());
   EXPECT_LT(*frontiers.t99_s, 600.0);
   EXPECT_EQ(frontiers.trees, 1);  // still the one dispatch
+  // Only robots done with their leaves take frontier goals: no robot reaches a leaf after its
+  // first frontier goal (the replay event of each goal), and every goal is logged.
+  int goals = 0;
+  for (const ExplorationEvent& g : frontiers.recording.events) {
+    if (g.kind != "frontier_goal") continue;
+    ++goals;
+    for (const ExplorationEvent& l : frontiers.recording.events) {
+      if (l.kind == "leaf" && l.robot == g.robot) {
+        EXPECT_LT(l.t, g.t) << "robot " << g.robot << " reached a leaf after a frontier goal";
+      }
+    }
+  }
+  EXPECT_EQ(goals, frontiers.frontier_goals);
   EXPECT_EQ(frontiers.stalled_robots, 0);
   EXPECT_EQ(frontiers.collisions, 0);
 }
