@@ -3,7 +3,8 @@
 // the most open known-free place a short path away, reached around the other robots, so a robot
 // dithering in clutter or boxed in among robots gets out before it stalls. margin_exit
 // (ExplorationOptions::margin_escape, stop 23): where a robot standing too near a wall for its
-// routes' first legs to clear it drives first.
+// routes' first legs to clear it drives first. robots_in_way (ExplorationOptions::clear_way_out,
+// stop 27): which robots stand in a stuck robot's way out.
 #pragma once
 
 #include <cstddef>
@@ -49,15 +50,15 @@ struct UnstickOptions {
 /// never checked: in willow (16 robots, coordinated, seeds 5 and 15) it clipped a wall corner 0.14
 /// m from the robot's centre (map speckle the team map had as free) and the guard stopped every new
 /// route for 600 s.
+[[nodiscard]] std::optional<Vec2> margin_exit(const BinaryGrid& grid, const BinaryGrid& world,
+                                              Vec2 p, double body, double margin,
+                                              double search = 1.0);
+
 /// ExplorationOptions::clear_way_out (ours, issue 14, stop 27): the indices (ascending) of the
 /// points of `robots` [m] whose distance to the polyline `way` [m] (a stuck robot's way out, from
 /// its position) is less than `reach` [m] (two body radii + 5 cm: their discs touch the disc
 /// that drives along it). A way of one point is that point.
 [[nodiscard]] std::vector<std::size_t> robots_in_way(const std::vector<Vec2>& way,
                                                      const std::vector<Vec2>& robots, double reach);
-
-[[nodiscard]] std::optional<Vec2> margin_exit(const BinaryGrid& grid, const BinaryGrid& world,
-                                              Vec2 p, double body, double margin,
-                                              double search = 1.0);
 
 }  // namespace voronav::exploration
