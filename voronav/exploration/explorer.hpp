@@ -150,7 +150,9 @@ struct ExplorationOptions {
   /// were there (the way out to open space); the robots (not on an unstick route themselves)
   /// whose discs touch that way drive an unstick route to open space first, and the stuck robot's
   /// own unstick route may pass where they stood (`way_clearances` counts the robots moved).
-  /// Robots beside it but not in its way keep their search.
+  /// Robots beside it but not in its way keep their search. Both options move the other robots
+  /// even with `unstick` off; the stuck robot then plans no route of its own (it keeps the
+  /// reactive search), so they only make room.
   bool clear_way_out = false;
   /// The same for the frontier methods; off by default: on willow (16 robots) it stalled more
   /// robots (frontier 3 and 7 against 0 and 0; an unstick route stopped by the front guard kept
