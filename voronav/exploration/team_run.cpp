@@ -9,6 +9,7 @@
 #include "voronav/exploration/internal/information_gain.hpp"
 #include "voronav/exploration/internal/plan_grid.hpp"
 #include "voronav/exploration/internal/stall_rule.hpp"
+#include "voronav/exploration/voronoi_tree.hpp"
 #include "voronav/field/distance_transform.hpp"
 
 namespace voronav::exploration::internal {
@@ -200,7 +201,7 @@ void TeamRun::finish() {
     result.escapes += ap->controller.escapes();
   result.feature_points = static_cast<int>(features.size());
   result.recording.feature_points = features.points();
-  result.recording.team_map = team_grid(team);
+  result.recording.team_map = team_grid_now();
 }
 
 double TeamRun::coverage_now() const {
@@ -240,6 +241,27 @@ std::vector<Vec2> TeamRun::path_on(const BinaryGrid& grid, Vec2 p, Vec2 q) {
   return simplify(grid, path);
 }
 
+// The grids derived from the team map, each built once per map version (sense() bumps it), by
+// whichever mechanism asks first: the tree dispatch and its leg checks, the frontier allocation
+// and the unstick routes of one step plan on the same grids.
+const OccupancyGrid& TeamRun::team_grid_now() {
+  return team_grid_cache.get(team_version, [&] { return team_grid(team); });
+}
+
+const BinaryGrid& TeamRun::tree_grid_now() {
+  return tree_grid_cache.get(team_version, [&] { return tree_grid(team_grid_now(), plan_radius); });
+}
+
+const BinaryGrid& TeamRun::plan_grid_now() {
+  return plan_grid_cache.get(team_version,
+                             [&] { return traversable_of(team_grid_now(), plan_radius); });
+}
+
+const field::DistanceField& TeamRun::plan_clearance_now() {
+  return plan_clearance_cache.get(team_version,
+                                  [&] { return field::distance_transform(plan_grid_now()); });
+}
+
 void TeamRun::log_event(double t, const Agent& a, const char* kind) {
   int id = -1;
   for (std::size_t i = 0; i < agents.size(); ++i)
@@ -265,8 +287,10 @@ std::vector<std::size_t> TeamRun::mark_others_on(BinaryGrid& grid, std::size_t i
                            kRobotAwareRange);
 }
 
-// Sense and map (every map_period).
+// Sense and map (every map_period): the only place the team map changes, so the grids derived
+// from it are built afresh after (team_version).
 void TeamRun::sense() {
+  ++team_version;
   for (auto& ap : agents) {
     Agent& a = *ap;
     const robot::LaserScan scan =

@@ -16,7 +16,7 @@ namespace voronav::exploration::internal {
 // kTreeFrontier (ours): the current tree's leaves, rebuilt every hybrid_tree_period from all
 // feature points on the team map (only known obstacles block), rooted at the team's start.
 void TeamRun::rebuild_hybrid_tree(double t) {
-  const BinaryGrid opt = tree_grid(team_grid(team), plan_radius);
+  const BinaryGrid& opt = tree_grid_now();
   VoronoiTree tree =
       build_voronoi_tree(voronoi_of_points(features.positions()), opt, centre, o.tree);
   ++result.trees;
@@ -41,8 +41,8 @@ void TeamRun::replan_frontiers(double t) {
     if (!agents[i]->unsticking &&
         (!tree_done_only || (agents[i]->tree_done && !agents[i]->on_tree)))
       active.push_back(i);
-  const OccupancyGrid tg = team_grid(team);
-  trav = traversable_of(tg, plan_radius);
+  const OccupancyGrid& tg = team_grid_now();
+  trav = plan_grid_now();  // a copy: the robots' discs are marked on it and restored
   std::vector<Frontier> fr = find_frontiers(tg, trav, o.frontier);
   const std::size_t n_frontiers = fr.size();
   if (o.share_bans)
@@ -54,7 +54,7 @@ void TeamRun::replan_frontiers(double t) {
   if (hybrid) {
     for (const Frontier& f : fr)
       gains.push_back(unknown_fraction(tg, g.cell_center(f.target)));
-    opt = tree_grid(tg, plan_radius);
+    opt = tree_grid_now();  // a copy, as trav
     for (const Vec2& l : leaf_goals) {
       const double gain = unknown_fraction(tg, l);
       if (gain < o.min_leaf_gain) continue;
@@ -87,6 +87,7 @@ void TeamRun::replan_frontiers(double t) {
   };
   std::vector<std::vector<double>> costs(active.size(), std::vector<double>(fr.size(), -1.0));
   std::vector<std::vector<std::vector<Vec2>>> paths(active.size());
+  bool any_cost = false;  // some robot can reach some target (team_has_target)
   for (std::size_t r = 0; r < active.size(); ++r) {
     Agent& a = *agents[active[r]];
     const Vec2 pos = a.body.true_pose().position;
@@ -105,7 +106,10 @@ void TeamRun::replan_frontiers(double t) {
       if (from && flood_opt.flood(opt, *from, planning::Connectivity::k8) > 0)
         for (std::size_t f = n_frontiers; f < fr.size(); ++f) {
           const std::int32_t s = flood_opt.steps(opt, fr[f].target);
-          if (s >= 0 && !banned(fr[f].centroid)) costs[r][f] = s * g.resolution;
+          if (s >= 0 && !banned(fr[f].centroid)) {
+            costs[r][f] = s * g.resolution;
+            any_cost = true;
+          }
         }
       restore_free_cells(opt, marked_opt);
     }
@@ -118,7 +122,10 @@ void TeamRun::replan_frontiers(double t) {
     for (std::size_t f = 0; f < n_frontiers; ++f) {
       const Vec2 tp = g.cell_center(fr[f].target);
       const std::int32_t s = flood.steps(trav, fr[f].target);
-      if (!banned(tp) && s >= 0 && !crowded(active[r], f)) costs[r][f] = s * g.resolution;
+      if (!banned(tp) && s >= 0 && !crowded(active[r], f)) {
+        costs[r][f] = s * g.resolution;
+        any_cost = true;
+      }
     }
     // Paths only for the frontiers this robot might take are made below (same flood reused).
     paths[r].resize(fr.size());
@@ -133,12 +140,7 @@ void TeamRun::replan_frontiers(double t) {
     restore_free_cells(trav, marked);
   }
   // ExplorationResult::stalled_without_target (an allocation without robots in it says nothing).
-  if (!active.empty()) {
-    team_has_target = false;
-    for (const auto& row : costs)
-      for (const double c : row)
-        team_has_target = team_has_target || c >= 0.0;
-  }
+  if (!active.empty()) team_has_target = any_cost;
   std::vector<int> choice = o.method == ExplorationMethod::kFrontier
                                 ? assign_nearest(fr, costs, o.frontier)
                                 : assign_coordinated(fr, costs, o.frontier, gains);

@@ -13,10 +13,10 @@
 namespace voronav::exploration::internal {
 
 // The next leg of a robot's tree route, or (none left) the end of its dispatch.
-void TeamRun::start_leg(Agent& a, double t, const TreeGrids* built) {
-  if (o.skip_known_leaves) skip_known_leaves(a, t, built);
-  if (o.unknown_leaves_first) unknown_leaves_first(a, t, built);
-  if (o.nearest_leaf_next && a.legs.empty()) take_nearest_leaf(a, built);
+void TeamRun::start_leg(Agent& a, double t) {
+  if (o.skip_known_leaves) skip_known_leaves(a, t);
+  if (o.unknown_leaves_first) unknown_leaves_first(a, t);
+  if (o.nearest_leaf_next && a.legs.empty()) take_nearest_leaf(a);
   if (!a.legs.empty()) {
     start_follow(a, a.legs.front());
     a.on_tree = true;
@@ -32,11 +32,9 @@ void TeamRun::start_leg(Agent& a, double t, const TreeGrids* built) {
 // ExplorationOptions::skip_known_leaves (ours): the legs whose leaves the team map already knows
 // are dropped; the next one is planned from where the robot stands (its tree route started at the
 // leaf before, which the robot did not visit). A leaf out of reach from here is given up.
-// `built`: the team map and tree grid of this step when the caller has them (else built here).
-void TeamRun::skip_known_leaves(Agent& a, double t, const TreeGrids* built) {
+void TeamRun::skip_known_leaves(Agent& a, double t) {
   if (a.legs.empty()) return;
-  std::optional<OccupancyGrid> own_tg;
-  const OccupancyGrid& tg = built ? built->team : own_tg.emplace(team_grid(team));
+  const OccupancyGrid& tg = team_grid_now();
   bool skipped = false;
   while (!a.legs.empty() && unknown_fraction(tg, a.legs.front().back()) < o.min_leaf_gain) {
     a.legs.pop_front();
@@ -45,8 +43,7 @@ void TeamRun::skip_known_leaves(Agent& a, double t, const TreeGrids* built) {
     skipped = true;
   }
   if (!skipped) return;
-  std::optional<BinaryGrid> own_opt;
-  const BinaryGrid& opt = built ? built->opt : own_opt.emplace(tree_grid(tg, plan_radius));
+  const BinaryGrid& opt = tree_grid_now();
   while (!a.legs.empty() && !leg_from_here(a, opt))
     a.legs.pop_front();
 }
@@ -55,11 +52,9 @@ void TeamRun::skip_known_leaves(Agent& a, double t, const TreeGrids* built) {
 // faces unknown space moves ahead of the others (their order stays figure 9's). A leg that does
 // not start where the robot stands (moved ahead, or after a leaf given up) is planned afresh from
 // here; a leaf out of reach from here is given up.
-void TeamRun::unknown_leaves_first(Agent& a, double t, const TreeGrids* built) {
+void TeamRun::unknown_leaves_first(Agent& a, double t) {
   if (a.legs.empty()) return;
-  std::optional<OccupancyGrid> own_tg;
-  const OccupancyGrid& tg = built ? built->team : own_tg.emplace(team_grid(team));
-  std::optional<BinaryGrid> own_opt;
+  const OccupancyGrid& tg = team_grid_now();
   const Vec2 pos = a.body.true_pose().position;
   while (!a.legs.empty()) {
     std::size_t k = 0;
@@ -73,9 +68,7 @@ void TeamRun::unknown_leaves_first(Agent& a, double t, const TreeGrids* built) {
       log_event(t, a, "leaf_promoted");
     }
     if (distance(pos, a.legs.front().front()) <= kLegJoin) return;
-    const BinaryGrid& opt =
-        built ? built->opt : (own_opt ? *own_opt : own_opt.emplace(tree_grid(tg, plan_radius)));
-    if (leg_from_here(a, opt)) return;
+    if (leg_from_here(a, tree_grid_now())) return;
     a.legs.pop_front();  // out of reach from here: given up
   }
 }
@@ -84,7 +77,7 @@ void TeamRun::unknown_leaves_first(Agent& a, double t, const TreeGrids* built) {
 // the tree (the route up to the lowest common ancestor and down), its route along the tree; from
 // where the robot stands when that is not at its last leaf (a leaf given up). A leaf out of reach
 // from here goes back to the pool for the others.
-bool TeamRun::take_nearest_leaf(Agent& a, const TreeGrids* built) {
+bool TeamRun::take_nearest_leaf(Agent& a) {
   const VoronoiTree& tree = result.recording.tree;
   if (leaf_pool.empty() || tree.empty() || a.tree_node < 0) return false;
   const auto along = [&](int from, int to) {
@@ -102,21 +95,13 @@ bool TeamRun::take_nearest_leaf(Agent& a, const TreeGrids* built) {
     order.emplace_back(along(a.tree_node, leaf_pool[k]), k);
   std::stable_sort(order.begin(), order.end(),
                    [](const auto& x, const auto& y) { return x.first < y.first; });
-  std::optional<OccupancyGrid> own_tg;
-  std::optional<BinaryGrid> own_opt;
   const Vec2 pos = a.body.true_pose().position;
   for (const auto& [d, k] : order) {
     const int leaf = leaf_pool[k];
     a.legs.push_back(tree.waypoints(a.tree_node, leaf));
-    if (distance(pos, a.legs.front().front()) > kLegJoin) {
-      const OccupancyGrid& tg =
-          built ? built->team : (own_tg ? *own_tg : own_tg.emplace(team_grid(team)));
-      const BinaryGrid& opt =
-          built ? built->opt : (own_opt ? *own_opt : own_opt.emplace(tree_grid(tg, plan_radius)));
-      if (!leg_from_here(a, opt)) {
-        a.legs.clear();
-        continue;
-      }
+    if (distance(pos, a.legs.front().front()) > kLegJoin && !leg_from_here(a, tree_grid_now())) {
+      a.legs.clear();
+      continue;
     }
     a.tree_node = leaf;
     leaf_pool.erase(leaf_pool.begin() + static_cast<std::ptrdiff_t>(k));
@@ -136,7 +121,7 @@ bool TeamRun::leg_from_here(Agent& a, const BinaryGrid& opt) {
   return true;
 }
 
-void TeamRun::finish_leg(Agent& a, double t, const TreeGrids* built) {
+void TeamRun::finish_leg(Agent& a, double t) {
   if (!a.legs.empty()) {
     if (distance(a.body.true_pose().position, a.legs.front().back()) < 2.0 * o.goal_tolerance) {
       ++result.leaves_reached;
@@ -144,7 +129,7 @@ void TeamRun::finish_leg(Agent& a, double t, const TreeGrids* built) {
     }
     a.legs.pop_front();
   }
-  start_leg(a, t, built);
+  start_leg(a, t);
 }
 
 void TeamRun::record_dispatch(double t, std::size_t i, bool first, Vec2 root,
@@ -166,8 +151,7 @@ void TeamRun::record_dispatch(double t, std::size_t i, bool first, Vec2 root,
 // known obstacles block, rooted at the vertex nearest the start; leaves by distance, robot i
 // takes leaves i, i + N, ...; the route runs from the root down the common trunk.
 bool TeamRun::dispatch_first(double t) {
-  const OccupancyGrid tg = team_grid(team);
-  const BinaryGrid opt = tree_grid(tg, plan_radius);
+  const BinaryGrid& opt = tree_grid_now();
   const PointVoronoi vor = voronoi_of_points(features.positions());
   VoronoiTree tree = build_voronoi_tree(vor, opt, centre, o.tree);
   ++result.trees;
@@ -220,8 +204,7 @@ bool TeamRun::dispatch_first(double t) {
       a.tree_done = true;
       continue;
     }
-    const TreeGrids built{tg, opt};  // for skip_known_leaves
-    start_leg(a, t, &built);
+    start_leg(a, t);
     record_dispatch(t, i, true, root, goals);
   }
   result.leaves = static_cast<int>(tree.leaves_by_distance().size());
@@ -238,8 +221,8 @@ void TeamRun::replan_from_robot(std::size_t i, double t) {
   Agent& a = *agents[i];
   a.retry_at = t + 10.0;
   const Vec2 pos = a.body.true_pose().position;
-  const OccupancyGrid tg = team_grid(team);
-  const BinaryGrid opt = tree_grid(tg, plan_radius);
+  const OccupancyGrid& tg = team_grid_now();
+  const BinaryGrid& opt = tree_grid_now();
   const PointVoronoi vor = voronoi_of_points(features.positions());
   const VoronoiTree tree = build_voronoi_tree(vor, opt, pos, o.tree);
   ++result.trees;
@@ -263,8 +246,7 @@ void TeamRun::replan_from_robot(std::size_t i, double t) {
     leg.insert(leg.end(), w.begin() + 1, w.end());
     a.legs.assign(1, std::move(leg));
     a.tree_done = false;
-    const TreeGrids built{tg, opt};  // for skip_known_leaves
-    start_leg(a, t, &built);
+    start_leg(a, t);
     record_dispatch(t, i, false, root, {lp});
     return;
   }
@@ -278,9 +260,8 @@ void TeamRun::check_tree_routes(double t) {
   for (auto& ap : agents)
     any = any || (ap->on_tree && ap->mode == AgentMode::kFollow);
   if (!any) return;
-  const OccupancyGrid tg = team_grid(team);
-  const BinaryGrid opt = tree_grid(tg, plan_radius);
-  const TreeGrids built{tg, opt};  // for skip_known_leaves: the team map does not change here
+  const OccupancyGrid& tg = team_grid_now();
+  const BinaryGrid& opt = tree_grid_now();
   for (auto& ap : agents) {
     Agent& a = *ap;
     if (!a.on_tree || a.mode != AgentMode::kFollow || t < a.reactive_until) continue;
@@ -289,7 +270,7 @@ void TeamRun::check_tree_routes(double t) {
     // within gain_radius of it is about to reach it) ends the leg here.
     if (o.skip_known_leaves && !a.legs.empty() && distance(pos, a.route.back()) > o.gain_radius &&
         unknown_fraction(tg, a.route.back()) < o.min_leaf_gain) {
-      start_leg(a, t, &built);
+      start_leg(a, t);
       continue;
     }
     bool ok = nearest_free(opt, a.route.back(), 1).has_value();
@@ -301,7 +282,7 @@ void TeamRun::check_tree_routes(double t) {
     if (ok) continue;
     std::vector<Vec2> path = path_on(opt, pos, a.route.back());
     if (path.empty() || distance(path.back(), a.route.back()) > 0.5) {
-      finish_leg(a, t, &built);  // unreachable now: give the leaf up
+      finish_leg(a, t);  // unreachable now: give the leaf up
       continue;
     }
     a.legs.front() = path;
@@ -327,7 +308,7 @@ bool TeamRun::replan_leg(std::size_t i, double t) {
   if (t - a.leg_replan_t < 15.0 && distance(pos, a.leg_replan_at) < o.stall_distance) return false;
   a.leg_replan_t = t;
   a.leg_replan_at = pos;
-  BinaryGrid opt = tree_grid(team_grid(team), plan_radius);
+  BinaryGrid opt = tree_grid_now();  // a copy: the robots' discs are marked on it
   const std::vector<std::size_t> marked = mark_others_on(opt, i);
   std::vector<Vec2> path = path_on(opt, pos, leaf);
   restore_free_cells(opt, marked);

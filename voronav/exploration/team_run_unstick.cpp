@@ -17,27 +17,11 @@ namespace voronav::exploration::internal {
 // same way. Traced on willow with 16 robots (issue 14): a robot in a small room with three
 // robots at its door, and one between map speckle and two robots, dithered in avoid turns and
 // 1 m corridor escapes for 60 s (stalled).
-const BinaryGrid& TeamRun::plan_grid_now(double t) {
-  if (t != plan_grid_t) {
-    plan_grid_cache = traversable_of(team_grid(team), plan_radius);
-    plan_grid_t = t;
-  }
-  return plan_grid_cache;
-}
-
-const field::DistanceField& TeamRun::plan_clearance_now(double t) {
-  if (t != plan_clearance_t) {
-    plan_clearance_cache = field::distance_transform(plan_grid_now(t));
-    plan_clearance_t = t;
-  }
-  return plan_clearance_cache;
-}
-
 bool TeamRun::unstick(std::size_t i, double t, bool ask_others) {
   Agent& a = *agents[i];
   const Vec2 pos = a.body.true_pose().position;
-  const field::DistanceField& clearance = plan_clearance_now(t);  // without robots
-  BinaryGrid grid = plan_grid_now(t);
+  const field::DistanceField& clearance = plan_clearance_now();  // without robots
+  BinaryGrid grid = plan_grid_now();
   (void)mark_others_on(grid, i);
   std::vector<Vec2> path;
   const auto from = nearest_free(grid, pos, 3);
@@ -88,10 +72,10 @@ void TeamRun::disperse_around(std::size_t i, double t) {
 // unstick route, planned around them, led deeper in or was not found.
 void TeamRun::clear_way_out(std::size_t i, double t) {
   const Vec2 pos = agents[i]->body.true_pose().position;
-  const BinaryGrid& grid = plan_grid_now(t);  // the team map's planning grid, without robots
+  const BinaryGrid& grid = plan_grid_now();  // the team map's planning grid, without robots
   const auto from = nearest_free(grid, pos, 3);
   if (!from || flood.flood(grid, *from, planning::Connectivity::k8) == 0) return;
-  const std::optional<Cell> best = unstick_target(grid, flood, plan_clearance_now(t));
+  const std::optional<Cell> best = unstick_target(grid, flood, plan_clearance_now());
   if (!best) return;
   std::vector<Vec2> way = descend(grid, flood, *best);
   way.insert(way.begin(), pos);
@@ -118,7 +102,7 @@ void TeamRun::end_unstick(Agent& a, double t) {
   a.route.clear();
   a.mode = AgentMode::kReactive;
   if (a.legs.empty()) return;
-  if (!leg_from_here(a, tree_grid(team_grid(team), plan_radius)))
+  if (!leg_from_here(a, tree_grid_now()))
     a.legs.pop_front();  // the leaf is out of reach from here: give it up
   start_leg(a, t);
 }
@@ -126,8 +110,7 @@ void TeamRun::end_unstick(Agent& a, double t) {
 // the planning margin (nearer than body + clearance to a known wall, or to one its guard senses)
 // drives straight to the exit cell margin_exit() picks (unstick.hpp), then takes goals again.
 bool TeamRun::margin_escape(Agent& a, double t, Vec2 now) {
-  const std::optional<Vec2> exit_at =
-      margin_exit(plan_grid_now(t), blocked, now, body, plan_radius);
+  const std::optional<Vec2> exit_at = margin_exit(plan_grid_now(), blocked, now, body, plan_radius);
   if (!exit_at) return false;
   start_unstick_route(a, {now, *exit_at});
   a.block.on_fired();  // its own 3 s: the clock ran on the route that stopped it

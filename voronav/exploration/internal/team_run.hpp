@@ -3,7 +3,8 @@
 // core/stepper.hpp as sense -> decide -> move (act) -> record. One class whose methods are split
 // by mechanism, so that a reader finds one paper's rule in one file:
 //  * team_run.cpp: the start (team placement, the reachable cells that coverage counts), the four
-//    phases of a step, the results;
+//    phases of a step, the results, and the grids every mechanism plans on, built once per team
+//    map version (internal/map_cache.hpp);
 //  * team_run_act.cpp: a robot's command for a step (route following, front guard, right of way,
 //    footprint safety), the progress watchdog and the stall watch;
 //  * team_run_tree.cpp: seed 004's single tree dispatch (figure 9), tree legs and their checks,
@@ -15,6 +16,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <random>
 #include <vector>
@@ -25,6 +27,7 @@
 #include "voronav/exploration/explorer.hpp"
 #include "voronav/exploration/internal/agent.hpp"
 #include "voronav/exploration/internal/front_guard.hpp"
+#include "voronav/exploration/internal/map_cache.hpp"
 #include "voronav/exploration/internal/team_bans.hpp"
 #include "voronav/field/distance_transform.hpp"
 #include "voronav/mapping/occupancy_map.hpp"
@@ -61,6 +64,10 @@ class TeamRun {
   void record(double t_end);
   void finish();
   void log_event(double t, const Agent& a, const char* kind);
+  /// The team map as a ROS-valued grid (team_grid()), built once per team map version.
+  [[nodiscard]] const OccupancyGrid& team_grid_now();
+  /// Its tree grid (tree_grid(): only known obstacles block), once per team map version.
+  [[nodiscard]] const BinaryGrid& tree_grid_now();
   /// A new route for `a` (empty: reactive search); its block clock goes on.
   void start_follow(Agent& a, std::vector<Vec2> route);
   /// An unstick or margin-escape route: out of the allocation and off the tree while it runs.
@@ -82,22 +89,16 @@ class TeamRun {
   void watchdog_fires(std::size_t i, double t, Vec2 now);
 
   // --- team_run_tree.cpp ---
-  /// The team map and its tree grid (only known obstacles block) that a caller has built at this
-  /// step already, for skip_known_leaves (null: it builds them itself when it needs them).
-  struct TreeGrids {
-    const OccupancyGrid& team;
-    const BinaryGrid& opt;
-  };
-  void start_leg(Agent& a, double t, const TreeGrids* built = nullptr);
-  void skip_known_leaves(Agent& a, double t, const TreeGrids* built);
+  void start_leg(Agent& a, double t);
+  void skip_known_leaves(Agent& a, double t);
   /// A leg starting farther than this from the robot is planned afresh (unknown_leaves_first).
   static constexpr double kLegJoin = 1.0;  // [m]
-  void unknown_leaves_first(Agent& a, double t, const TreeGrids* built);
+  void unknown_leaves_first(Agent& a, double t);
   /// ExplorationOptions::nearest_leaf_next: a robot without legs takes the pooled leaf nearest
   /// its last one along the tree (false: none left that it can reach).
-  bool take_nearest_leaf(Agent& a, const TreeGrids* built);
+  bool take_nearest_leaf(Agent& a);
   bool leg_from_here(Agent& a, const BinaryGrid& opt);
-  void finish_leg(Agent& a, double t, const TreeGrids* built = nullptr);
+  void finish_leg(Agent& a, double t);
   void record_dispatch(double t, std::size_t i, bool first, Vec2 root,
                        const std::vector<Vec2>& leaves);
   bool dispatch_first(double t);
@@ -111,11 +112,11 @@ class TeamRun {
 
   // --- team_run_unstick.cpp ---
   bool unstick(std::size_t i, double t, bool ask_others);
-  /// The team map's planning grid (known free cells inflated by plan_radius) for this step,
-  /// built at most once per step: the team map changes only in sense().
-  [[nodiscard]] const BinaryGrid& plan_grid_now(double t);
-  /// Its clearance (unstick targets), also once per step.
-  [[nodiscard]] const field::DistanceField& plan_clearance_now(double t);
+  /// The team map's planning grid (known free cells inflated by plan_radius), built once per
+  /// team map version (team_run.cpp, with the other map caches).
+  [[nodiscard]] const BinaryGrid& plan_grid_now();
+  /// Its clearance (unstick targets), also once per team map version.
+  [[nodiscard]] const field::DistanceField& plan_clearance_now();
   /// ExplorationOptions::disperse_neighbours: the robots without a route near robot i drive
   /// unstick routes away; they are listed in `leaving` until i has planned its own.
   void disperse_around(std::size_t i, double t);
@@ -156,10 +157,13 @@ class TeamRun {
   TeamBans team_bans;               // ExplorationOptions::share_bans
   std::vector<Vec2> leaf_goals;     // kTreeFrontier: the current tree's leaves
   std::vector<robot::Disc> others;  // act(): the other robots' discs
-  BinaryGrid plan_grid_cache;       // plan_grid_now(): the grid of step plan_grid_t
-  double plan_grid_t = -1.0;
-  field::DistanceField plan_clearance_cache;
-  double plan_clearance_t = -1.0;
+  // The team map changes only in sense(), which bumps team_version; the grids derived from it
+  // are built once per version (internal/map_cache.hpp), whichever mechanism asks first.
+  std::uint64_t team_version = 0;
+  MapCache<OccupancyGrid> team_grid_cache;              // team_grid_now()
+  MapCache<BinaryGrid> tree_grid_cache;                 // tree_grid_now()
+  MapCache<BinaryGrid> plan_grid_cache;                 // plan_grid_now()
+  MapCache<field::DistanceField> plan_clearance_cache;  // plan_clearance_now()
   std::vector<std::size_t> leaving;  // disperse_around(): robots sent away (not planned around)
   bool tree_method, hybrid;
   double tree_start;
