@@ -239,7 +239,9 @@ struct ExplorationOptions {
   /// list (the N leaves nearest the root, one each, as the paper); the other leaves form one pool,
   /// and a robot done with a leaf takes from it the leaf nearest its last one along the tree (ties:
   /// the nearer to the root), route along the tree. Off: robot i drives its dealt list i, i + N,
-  /// ... in order (our reading). `leaves_pooled` counts the leaves taken from the pool.
+  /// ... in order (our reading). `leaves_pooled` counts the leaves taken from the pool. With
+  /// skip_known_leaves or unknown_leaves_first also on, those act on the dealt first leaf only: a
+  /// leaf taken from the pool is driven to as it is (they run before the pool is asked).
   bool nearest_leaf_next = false;
   /// Ours (issue 14, stop 27), kTree only, beyond the paper: a robot done with its dealt leaves
   /// takes goals from Burgard's coordinated frontier allocation (kCoordinated's, every
@@ -247,6 +249,8 @@ struct ExplorationOptions {
   /// search; with no frontier left for it, it searches reactively. `frontier_goals` counts them.
   /// Traced on depot (4 robots, seeds 3, 10, 13): the unknown left at 900 s lies in corners of
   /// the hall that no leaf faces, and the reactive search reaches them only after 900 s.
+  /// With tree_replan kFromRobots as well, both act on the robots done with their leaves: a new
+  /// tree's legs, when one is built, replace the frontier goal.
   bool frontiers_after_leaves = false;
   /// The front guard's rule (see FrontGuard); every method.
   FrontGuard guard = FrontGuard::kCorridor;
