@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "voronav/exploration/explorer.hpp"
 
@@ -41,6 +43,19 @@ double farthest_in_10s(const ExplorationResult& r, double t, int k) {
   return moved;
 }
 
+// The (watchdog event, "unstick" event of another robot at the same time) pairs of a run: the
+// robots sent away for a stuck robot.
+std::vector<std::pair<const ExplorationEvent*, const ExplorationEvent*>> moved_at_watchdogs(
+    const ExplorationResult& r) {
+  std::vector<std::pair<const ExplorationEvent*, const ExplorationEvent*>> out;
+  for (const ExplorationEvent& w : r.recording.events) {
+    if (w.kind != "watchdog") continue;
+    for (const ExplorationEvent& u : r.recording.events)
+      if (u.kind == "unstick" && u.robot != w.robot && u.t == w.t) out.emplace_back(&w, &u);
+  }
+  return out;
+}
+
 // Three robots of the paper's random search (no tree) for 120 s from the room's corner.
 ExplorationOptions random_search_of_three(int seed) {
   ExplorationOptions o;
@@ -62,19 +77,14 @@ TEST(Disperse, RobotsBesideAStuckRobotDriveAway) {
     const ExplorationResult r = run_exploration(narrow_room(), o);
     EXPECT_EQ(r.collisions, 0);
     // A dispersal is an "unstick" event of another robot at the time of a watchdog event.
-    int found = 0;
-    for (const ExplorationEvent& w : r.recording.events) {
-      if (w.kind != "watchdog") continue;
-      for (const ExplorationEvent& u : r.recording.events) {
-        if (u.kind != "unstick" || u.robot == w.robot || u.t != w.t) continue;
-        ++found;
-        // It was within disperse_range (+ 1 s of driving between frames) and drove away.
-        const Vec2 stuck = pose_at(r, w.t, w.robot), before = pose_at(r, w.t, u.robot);
-        EXPECT_LT(distance(stuck, before), o.disperse_range + 0.5) << "seed " << seed;
-        if (farthest_in_10s(r, w.t, u.robot) > 0.5) ++drove_away;
-      }
+    const auto moved = moved_at_watchdogs(r);
+    for (const auto& [w, u] : moved) {
+      // It was within disperse_range (+ 1 s of driving between frames) and drove away.
+      const Vec2 stuck = pose_at(r, w->t, w->robot), before = pose_at(r, w->t, u->robot);
+      EXPECT_LT(distance(stuck, before), o.disperse_range + 0.5) << "seed " << seed;
+      if (farthest_in_10s(r, w->t, u->robot) > 0.5) ++drove_away;
     }
-    EXPECT_EQ(found, r.dispersals) << "seed " << seed;
+    EXPECT_EQ(static_cast<int>(moved.size()), r.dispersals) << "seed " << seed;
     dispersed += r.dispersals;
     o.disperse_neighbours = false;
     EXPECT_EQ(run_exploration(narrow_room(), o).dispersals, 0);
@@ -95,16 +105,10 @@ TEST(ClearWayOut, RobotsInAStuckRobotsWayDriveAway) {
     EXPECT_EQ(r.dispersals, 0);  // disperse_neighbours stays off
     // A robot moved out of the way is an "unstick" event of another robot at the time of a
     // watchdog event.
-    int found = 0;
-    for (const ExplorationEvent& w : r.recording.events) {
-      if (w.kind != "watchdog") continue;
-      for (const ExplorationEvent& u : r.recording.events) {
-        if (u.kind != "unstick" || u.robot == w.robot || u.t != w.t) continue;
-        ++found;
-        if (farthest_in_10s(r, w.t, u.robot) > 0.3) ++drove_away;
-      }
-    }
-    EXPECT_EQ(found, r.way_clearances) << "seed " << seed;
+    const auto moved = moved_at_watchdogs(r);
+    for (const auto& [w, u] : moved)
+      if (farthest_in_10s(r, w->t, u->robot) > 0.3) ++drove_away;
+    EXPECT_EQ(static_cast<int>(moved.size()), r.way_clearances) << "seed " << seed;
     cleared += r.way_clearances;
     o.clear_way_out = false;
     EXPECT_EQ(run_exploration(narrow_room(), o).way_clearances, 0);
