@@ -371,8 +371,9 @@ void setup(CLI::App& app) {
              "or visits every leaf in figure 9's order (off, the paper)");
   add_on_off(cmd, "--unknown-leaves-first", args->unknown_leaves_first,
              "tree: a robot drives first to the next of its dispatched leaves that still faces "
-             "unknown space (--min-leaf-gain) and visits the others after, none dropped (on, "
-             "ours), or visits them in figure 9's order (off, the paper)");
+             "unknown space (--min-leaf-gain) and visits the others after; none is dropped for "
+             "being known, one out of reach from where it stands is given up (on, ours), or "
+             "visits them in figure 9's order (off, the paper)");
   add_on_off(cmd, "--nearest-leaf-next", args->nearest_leaf_next,
              "tree: after figure 9's first round (one leaf per robot) a robot takes the leaf "
              "nearest its last one along the tree from one shared pool (on, ours) or drives "

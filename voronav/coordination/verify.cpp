@@ -38,13 +38,6 @@ double gap(const Box& a, const Box& b) {
   return std::hypot(dx, dy);
 }
 
-double point_segment(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double l2 = dot(ab, ab);
-  const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
-  return (p - (a + ab * t)).norm();
-}
-
 /// Distance from segment ab to the axis-aligned square [x, x+1] x [y, y+1] (grid units).
 double segment_square(Vec2 a, Vec2 b, double x, double y) {
   auto inside = [&](Vec2 p) { return p.x >= x && p.x <= x + 1 && p.y >= y && p.y <= y + 1; };
@@ -58,7 +51,8 @@ double segment_square(Vec2 a, Vec2 b, double x, double y) {
     const double d1 = cross(b - a, p - a), d2 = cross(b - a, q - a);
     const double d3 = cross(q - p, a - p), d4 = cross(q - p, b - p);
     if (((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0))) return 0.0;
-    best = std::min({best, point_segment(p, a, b), point_segment(a, p, q), point_segment(b, p, q)});
+    best = std::min({best, distance_to_segment(p, a, b), distance_to_segment(a, p, q),
+                     distance_to_segment(b, p, q)});
   }
   return best;
 }

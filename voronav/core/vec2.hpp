@@ -2,6 +2,7 @@
 // A world point is deliberately a different type from a grid Cell, so the two cannot be mixed up.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 
@@ -39,10 +40,23 @@ struct Vec2 {
   [[nodiscard]] bool is_finite() const { return std::isfinite(x) && std::isfinite(y); }
 };
 
-[[nodiscard]] constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+[[nodiscard]] constexpr double dot(Vec2 a, Vec2 b) {
+  return a.x * b.x + a.y * b.y;
+}
 /// z component of the 3-D cross product: > 0 when b is counter-clockwise of a.
-[[nodiscard]] constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-[[nodiscard]] inline double distance(Vec2 a, Vec2 b) { return (a - b).norm(); }
+[[nodiscard]] constexpr double cross(Vec2 a, Vec2 b) {
+  return a.x * b.y - a.y * b.x;
+}
+[[nodiscard]] inline double distance(Vec2 a, Vec2 b) {
+  return (a - b).norm();
+}
+/// Distance from p to the segment a-b (to a when a == b).
+[[nodiscard]] inline double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double l2 = dot(ab, ab);
+  const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+  return (p - (a + ab * t)).norm();
+}
 /// Rotates v counter-clockwise by yaw [rad].
 [[nodiscard]] inline Vec2 rotate(Vec2 v, double yaw) {
   const double c = std::cos(yaw), s = std::sin(yaw);

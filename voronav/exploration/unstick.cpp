@@ -10,17 +10,6 @@
 #include "voronav/field/distance_transform.hpp"
 
 namespace voronav::exploration {
-namespace {
-// Distance [m] from p to the segment a-b.
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 d = b - a;
-  const double len2 = d.x * d.x + d.y * d.y;
-  const double s =
-      len2 > 0.0 ? std::clamp(((p.x - a.x) * d.x + (p.y - a.y) * d.y) / len2, 0.0, 1.0) : 0.0;
-  return distance(p, a + d * s);
-}
-}  // namespace
-
 std::vector<std::size_t> robots_in_way(const std::vector<Vec2>& way,
                                        const std::vector<Vec2>& robots, double reach) {
   std::vector<std::size_t> out;
