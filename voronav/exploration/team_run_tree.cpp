@@ -153,10 +153,10 @@ void TeamRun::record_dispatch(double t, std::size_t i, bool first, Vec2 root,
 bool TeamRun::dispatch_first(double t) {
   const BinaryGrid& opt = tree_grid_now();
   const PointVoronoi vor = voronoi_of_points(features.positions());
-  VoronoiTree tree = build_voronoi_tree(vor, opt, centre, o.tree);
+  VoronoiTree built = build_voronoi_tree(vor, opt, centre, o.tree);
   ++result.trees;
-  const std::vector<int> leaves = tree.leaves_by_distance();
-  if (tree.empty() || leaves.empty()) return false;
+  const std::vector<int> leaves = built.leaves_by_distance();
+  if (built.empty() || leaves.empty()) return false;
   std::vector<std::vector<int>> dispatch = dispatch_leaves(leaves, o.robots);
   if (o.nearest_leaf_next) {
     // Figure 9's first round (the N leaves nearest the root, one per robot); the rest pooled in
@@ -167,8 +167,10 @@ bool TeamRun::dispatch_first(double t) {
     for (auto& list : dispatch)
       if (list.size() > 1) list.erase(list.begin() + 1, list.end());
   }
+  // Recorded before the legs start: nearest_leaf_next takes leaves along it from start_leg on.
+  result.recording.tree = std::move(built);
+  const VoronoiTree& tree = result.recording.tree;
   const Vec2 root = tree.nodes[static_cast<std::size_t>(tree.root)].position;
-  result.recording.tree = tree;  // nearest_leaf_next takes leaves along it from start_leg on
   std::vector<std::vector<Vec2>> routes;
   for (std::size_t i = 0; i < agents.size(); ++i) {
     Agent& a = *agents[i];
@@ -207,8 +209,7 @@ bool TeamRun::dispatch_first(double t) {
     start_leg(a, t);
     record_dispatch(t, i, true, root, goals);
   }
-  result.leaves = static_cast<int>(tree.leaves_by_distance().size());
-  result.recording.tree = std::move(tree);
+  result.leaves = static_cast<int>(leaves.size());
   result.recording.dispatch = std::move(dispatch);
   result.recording.routes = std::move(routes);
   result.recording.tree_time = t;
