@@ -136,44 +136,16 @@ void save_pictures(const OccupancyGrid& world, const exploration::ExplorationRes
   fig.save(dir / "tree.png");
 }
 
-/// The fields every command's JSON has (docs/ros.md): frame, units, the inputs echoed, each
-/// robot's start and final pose {x, y, yaw} in `map`.
+/// The fields every command's JSON has (docs/ros.md): frame, units, the inputs echoed (the
+/// library's echo of the options the run used, and the map), each robot's start and final pose
+/// {x, y, yaw} in `map`.
 nlohmann::json with_frames(nlohmann::json j, const ExploreArgs& a,
+                           const exploration::ExplorationOptions& o,
                            const exploration::ExplorationResult& r) {
   j["frame_id"] = "map";
   j["units"] = {{"time", "s"}, {"length", "m"}, {"coverage", "fraction"}, {"yaw", "rad"}};
-  j["input"] = {{"map", a.world},
-                {"robots", a.robots},
-                {"method", a.method},
-                {"time_s", a.time},
-                {"tree_start_s", a.tree_start},
-                {"tree_replan", a.tree_replan},
-                {"tree_leg_replan", a.tree_leg_replan},
-                {"avoid_escape", a.avoid_escape},
-                {"random_turn_rate", a.random_turn_rate},
-                {"unstick", a.unstick},
-                {"frontier_unstick", a.frontier_unstick},
-                {"idle_unstick", a.idle_unstick},
-                {"yield_to_held", a.yield_to_held},
-                {"retry_banned", a.retry_banned},
-                {"share_bans", a.share_bans},
-                {"crowd_limit", a.crowd_limit},
-                {"drop_goalless_routes", a.drop_goalless_routes},
-                {"margin_escape", a.margin_escape},
-                {"disperse_neighbours", a.disperse_neighbours},
-                {"clear_way_out", a.clear_way_out},
-                {"skip_known_leaves", a.skip_known_leaves},
-                {"unknown_leaves_first", a.unknown_leaves_first},
-                {"nearest_leaf_next", a.nearest_leaf_next},
-                {"frontiers_after_leaves", a.frontiers_after_leaves},
-                {"gain_through_free", a.gain_through_free},
-                {"guard", a.guard},
-                {"seed", a.seed},
-                {"stop_at_coverage", a.stop_at}};
-  if (!a.start.empty()) {
-    const Vec2 s = parse_point(a.start, "--start");
-    j["input"]["start"] = {s.x, s.y};
-  }
+  j["input"] = nlohmann::json::parse(exploration::to_json(o));
+  j["input"]["map"] = a.world;
   nlohmann::json poses = nlohmann::json::array();
   const auto& rec = r.recording;
   for (std::size_t i = 0; i < rec.starts.size(); ++i) {
@@ -241,7 +213,7 @@ void run(const ExploreArgs& a) {
     if (ec) throw Error(a.out.string(), 0, "cannot create the output folder: " + ec.message());
     std::ofstream f(a.out / "exploration.json");
     if (!f) throw Error((a.out / "exploration.json").string(), 0, "cannot write");
-    f << with_frames(nlohmann::json::parse(exploration::to_json(r, true)), a, r).dump() << "\n";
+    f << with_frames(nlohmann::json::parse(exploration::to_json(r, true)), a, o, r).dump() << "\n";
     save_pictures(exploration::resample_world(world, o.min_cell_size), r, a.out, a.picture_px);
     report::write_replay_html(exploration_recording(r), (a.out / "index.html").string());
   }
@@ -260,7 +232,7 @@ void run(const ExploreArgs& a) {
     bag::write_run_bag(rec, a.mcap, extras);
   }
   if (a.json) {
-    print_json(with_frames(nlohmann::json::parse(exploration::to_json(r, false)), a, r));
+    print_json(with_frames(nlohmann::json::parse(exploration::to_json(r, false)), a, o, r));
   } else {
     const auto opt = [](const std::optional<double>& v) {
       return v ? std::to_string(*v) + " s" : std::string("not reached");

@@ -409,6 +409,12 @@ void bind_sim(py::module_& m) {
                      "tree: the reactive search's ControllerOptions")
       .def_readwrite("frontier_controller", &ex::ExplorationOptions::frontier_controller,
                      "frontier methods: their reactive windows' ControllerOptions")
+      .def(
+          "to_dict",
+          [](const ex::ExplorationOptions& o) {
+            return py::module_::import("json").attr("loads")(ex::to_json(o));
+          },
+          "Every top-level option by name, as the CLI's `input` echoes it (on/off as strings).")
       .def("__repr__", [](const ex::ExplorationOptions& o) {
         return "explore.Options(method=" + std::string(ex::to_string(o.method)) +
                ", robots=" + std::to_string(o.robots) + ")";
@@ -429,12 +435,14 @@ void bind_sim(py::module_& m) {
           team = std::move(r.recording.team_map);
         }
         py::dict d = py::module_::import("json").attr("loads")(js);
+        d["input"] = py::module_::import("json").attr("loads")(ex::to_json(o));
         d["team_map"] = std::move(team);
         return d;
       },
       py::arg("world"), py::arg("options") = py::none(), py::arg("include_recording") = false,
       "Runs one exploration; keywords override Options fields. Returns the result dict (coverage, "
-      "t90_s, t99_s, distance_m, ...; frames with include_recording) and 'team_map'.");
+      "t90_s, t99_s, distance_m, ...; frames with include_recording), 'input' (the options used, "
+      "as the CLI echoes them) and 'team_map'.");
   xp.def("paper_world", &ex::paper_world, py::arg("resolution") = 0.05,
          "The 20 x 20 m world of seed 004; robots start near (2, 2).");
 

@@ -97,16 +97,26 @@ def test_figure_to_rgb_and_save(tmp_path):
 
 def test_explore_options_match_the_cli(cli):
     """Every controller and re-planning option the CLI has is an explore.Options field, and the
-    same settings give the same run (issue 14). The values differ from the defaults, so a field
-    that is ignored or bound to the wrong member changes the result."""
+    same settings give the same run (issue 14). Every switch is set away from its default, and the
+    options each front end hands the library are compared through the library's own echo
+    (`input`): a field bound to the wrong member, or a flag parsed into the wrong one, shows there
+    even when the run's counters cannot see it."""
     o = vn.explore.Options(method="tree", robots=2, time_limit=60.0, seed=3, tree_start_time=20.0,
                            start=vn.Vec2(2.0, 2.0))
     assert o.controller.random_turn_rate == 0.0 and o.controller.avoid_escape == vn.explore.AvoidEscape.corridor
     assert o.frontier_controller.random_turn_rate == pytest.approx(0.4)
     assert o.frontier_controller.avoid_escape == vn.explore.AvoidEscape.spin
+    defaults = o.to_dict()
     o.tree_replan = "robots"
     o.tree_leg_replan = "none"
     o.unstick = False
+    o.frontier_unstick = True
+    o.idle_unstick = False
+    o.yield_to_held = False
+    o.retry_banned = False
+    o.share_bans = True
+    o.crowd_limit = 3
+    o.drop_goalless_routes = True
     o.guard = "cone"
     o.skip_known_leaves = True
     o.gain_through_free = False
@@ -116,19 +126,37 @@ def test_explore_options_match_the_cli(cli):
     o.unknown_leaves_first = True  # a no-op beside nearest_leaf_next (one dealt leaf each): bound
     o.nearest_leaf_next = True
     o.frontiers_after_leaves = True
+    o.min_leaf_gain = 0.25
     o.stall_reach_radius = 0.12
+    o.stop_at_coverage = 0.97
     o.controller.random_turn_rate = 0.3  # in place: the field is the options' own member
     o.controller.avoid_escape = "spin"
     assert o.controller.random_turn_rate == pytest.approx(0.3)
     res = vn.explore.run(vn.explore.paper_world(), o)
     got = cli("explore", "--world", "paper", "--robots", "2", "--time", "60", "--seed", "3",
               "--tree-start", "20", "--tree-replan", "robots", "--tree-leg-replan", "none",
-              "--unstick", "off", "--random-turn-rate", "0.3", "--avoid-escape", "spin",
+              "--unstick", "off", "--frontier-unstick", "on", "--idle-unstick", "off",
+              "--yield-to-held", "off", "--retry-banned", "off", "--share-bans", "on",
+              "--crowd-limit", "3", "--drop-goalless-routes", "on",
+              "--random-turn-rate", "0.3", "--avoid-escape", "spin",
               "--guard", "cone", "--skip-known-leaves", "on",
               "--gain-through-free", "off", "--margin-escape", "off",
               "--disperse-neighbours", "on", "--clear-way-out", "on", "--nearest-leaf-next", "on",
               "--unknown-leaves-first", "on", "--frontiers-after-leaves", "on",
-              "--stall-reach-radius", "0.12")
+              "--min-leaf-gain", "0.25", "--stall-reach-radius", "0.12", "--stop-at", "0.97")
+    # The same options reached the library from both sides, and every one the CLI has was moved
+    # off its default (so a swapped pair of switches cannot hide behind equal values).
+    cli_input = {k: v for k, v in got["input"].items() if k != "map"}
+    assert res["input"] == cli_input
+    assert o.to_dict() == res["input"]
+    moved = {k for k in defaults if defaults[k] != res["input"][k]}
+    cli_flags = {"tree_replan", "tree_leg_replan", "unstick", "frontier_unstick", "idle_unstick",
+                 "yield_to_held", "retry_banned", "share_bans", "crowd_limit",
+                 "drop_goalless_routes", "guard", "skip_known_leaves", "gain_through_free",
+                 "margin_escape", "disperse_neighbours", "clear_way_out", "unknown_leaves_first",
+                 "nearest_leaf_next", "frontiers_after_leaves", "min_leaf_gain",
+                 "stall_reach_radius", "stop_at_coverage", "random_turn_rate", "avoid_escape"}
+    assert cli_flags <= moved, cli_flags - moved
     for key in ("coverage", "distance_m", "feature_points", "leaves", "dispatches", "escapes",
                 "unsticks", "collisions", "guard_wall_stops", "guard_robot_stops", "leaves_skipped",
                 "dispersals", "way_clearances", "leaves_promoted", "leaves_pooled", "frontier_goals",

@@ -153,6 +153,55 @@ ExplorationResult run_exploration(const OccupancyGrid& world_in, const Explorati
   return run.run();
 }
 
+std::string to_json(const ExplorationOptions& o) {
+  std::ostringstream os;
+  const auto on = [](bool b) { return b ? "\"on\"" : "\"off\""; };
+  const auto str = [](std::string_view v) {
+    std::string q(1, '"');
+    q.append(v);
+    q.push_back('"');
+    return q;
+  };
+  os << "{\"method\":" << str(to_string(o.method)) << ",\"robots\":" << o.robots
+     << ",\"time_s\":" << num(o.time_limit) << ",\"dt\":" << num(o.dt) << ",\"seed\":" << o.seed;
+  if (o.start) os << ",\"start\":[" << num(o.start->x) << "," << num(o.start->y) << "]";
+  os << ",\"start_spacing\":" << num(o.start_spacing)
+     << ",\"stop_at_coverage\":" << num(o.stop_at_coverage)
+     << ",\"map_period\":" << num(o.map_period) << ",\"map_beam_stride\":" << o.map_beam_stride
+     << ",\"record_period\":" << num(o.record_period)
+     << ",\"tree_start_s\":" << num(o.tree_start_time)
+     << ",\"tree_replan\":" << str(to_string(o.tree_replan))
+     << ",\"tree_leg_replan\":" << str(to_string(o.tree_leg_replan))
+     << ",\"hybrid_tree_start_time\":" << num(o.hybrid_tree_start_time)
+     << ",\"hybrid_tree_period\":" << num(o.hybrid_tree_period)
+     << ",\"min_leaf_gain\":" << num(o.min_leaf_gain) << ",\"gain_radius\":" << num(o.gain_radius)
+     << ",\"gain_through_free\":" << on(o.gain_through_free)
+     << ",\"stall_time\":" << num(o.stall_time) << ",\"stall_distance\":" << num(o.stall_distance)
+     << ",\"stall_reach_radius\":" << num(o.stall_reach_radius) << ",\"unstick\":" << on(o.unstick)
+     << ",\"disperse_neighbours\":" << on(o.disperse_neighbours)
+     << ",\"disperse_range\":" << num(o.disperse_range)
+     << ",\"clear_way_out\":" << on(o.clear_way_out)
+     << ",\"frontier_unstick\":" << on(o.frontier_unstick)
+     << ",\"idle_unstick\":" << on(o.idle_unstick) << ",\"yield_to_held\":" << on(o.yield_to_held)
+     << ",\"retry_banned\":" << on(o.retry_banned) << ",\"share_bans\":" << on(o.share_bans)
+     << ",\"crowd_limit\":" << o.crowd_limit
+     << ",\"drop_goalless_routes\":" << on(o.drop_goalless_routes)
+     << ",\"margin_escape\":" << on(o.margin_escape)
+     << ",\"skip_known_leaves\":" << on(o.skip_known_leaves)
+     << ",\"unknown_leaves_first\":" << on(o.unknown_leaves_first)
+     << ",\"nearest_leaf_next\":" << on(o.nearest_leaf_next)
+     << ",\"frontiers_after_leaves\":" << on(o.frontiers_after_leaves)
+     << ",\"guard\":" << str(to_string(o.guard)) << ",\"replan_period\":" << num(o.replan_period)
+     << ",\"goal_tolerance\":" << num(o.goal_tolerance) << ",\"clearance\":" << num(o.clearance)
+     << ",\"min_cell_size\":" << num(o.min_cell_size)
+     << ",\"random_turn_rate\":" << num(o.controller.random_turn_rate)
+     << ",\"avoid_escape\":" << str(robot::to_string(o.controller.avoid_escape))
+     << ",\"frontier_random_turn_rate\":" << num(o.frontier_controller.random_turn_rate)
+     << ",\"frontier_avoid_escape\":" << str(robot::to_string(o.frontier_controller.avoid_escape))
+     << "}";
+  return os.str();
+}
+
 std::string to_json(const ExplorationResult& r, bool include_recording) {
   std::ostringstream os;
   const auto opt = [](const std::optional<double>& v) { return v ? num(*v) : std::string("null"); };

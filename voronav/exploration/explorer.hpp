@@ -396,6 +396,14 @@ struct ExplorationResult {
 /// tree nodes, routes; not the maps).
 [[nodiscard]] std::string to_json(const ExplorationResult& result, bool include_recording = false);
 
+/// The options a run used, as one JSON object (the CLI's and Python's `input`): every top-level
+/// field by its name (on/off switches as "on"/"off"; `time_limit` as "time_s", `tree_start_time` as
+/// "tree_start_s", the tree controller's two switches as "random_turn_rate"/"avoid_escape", the
+/// frontier controller's with a "frontier_" prefix; `start` only when set). The nested robot,
+/// laser, feature, tree and frontier options are not echoed. One function for both front ends, so
+/// a test that compares them checks that each front end sets the member it names.
+[[nodiscard]] std::string to_json(const ExplorationOptions& options);
+
 /// The paper's 20 x 20 m world (seed 004, figure 7), reconstructed: outer walls, rectangular
 /// blocks, round obstacles and partial walls (the figure has no coordinates; see
 /// docs/reproductions/exploration.md). resolution [m/cell]. Robots start near (2, 2).
