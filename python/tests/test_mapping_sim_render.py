@@ -113,6 +113,8 @@ def test_explore_options_match_the_cli(cli):
     o.margin_escape = False
     o.disperse_neighbours = True
     o.clear_way_out = True
+    o.unstick_retry = True  # no-ops with unstick and margin_escape off: bound and echoed
+    o.unstick_right_of_way = True
     o.unknown_leaves_first = True  # a no-op beside nearest_leaf_next (one dealt leaf each): bound
     o.nearest_leaf_next = True
     o.frontiers_after_leaves = True
@@ -128,11 +130,12 @@ def test_explore_options_match_the_cli(cli):
               "--gain-through-free", "off", "--margin-escape", "off",
               "--disperse-neighbours", "on", "--clear-way-out", "on", "--nearest-leaf-next", "on",
               "--unknown-leaves-first", "on", "--frontiers-after-leaves", "on",
-              "--stall-reach-radius", "0.12")
+              "--stall-reach-radius", "0.12", "--unstick-retry", "on",
+              "--unstick-right-of-way", "on")
     for key in ("coverage", "distance_m", "feature_points", "leaves", "dispatches", "escapes",
                 "unsticks", "collisions", "guard_wall_stops", "guard_robot_stops", "leaves_skipped",
                 "dispersals", "way_clearances", "leaves_promoted", "leaves_pooled", "frontier_goals",
-                "stalled_robots", "idle_when_explored"):
+                "stalled_robots", "idle_when_explored", "unstick_retries", "unstick_yields"):
         assert res[key] == pytest.approx(got[key], rel=1e-5), key
     default = vn.explore.run(vn.explore.paper_world(), method="tree", robots=2, time_limit=60.0,
                              seed=3, tree_start_time=20.0, start=vn.Vec2(2.0, 2.0))

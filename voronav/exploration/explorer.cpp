@@ -94,6 +94,7 @@ void ExplorationOptions::validate() const {
   positive(stall_time, "stall_time");
   positive(stall_distance, "stall_distance");
   positive(disperse_range, "disperse_range");
+  positive(unstick_retry_period, "unstick_retry_period");
   if (!(stall_reach_radius >= 0.0) || !std::isfinite(stall_reach_radius))
     throw Error("ExplorationOptions.stall_reach_radius", 0,
                 "expected a finite number >= 0 (0 = the planning radius), got " +
@@ -169,6 +170,7 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"watchdog_events\":" << r.watchdog_events << ",\"leg_replans\":" << r.leg_replans
      << ",\"escapes\":" << r.escapes << ",\"unsticks\":" << r.unsticks
      << ",\"dispersals\":" << r.dispersals << ",\"way_clearances\":" << r.way_clearances
+     << ",\"unstick_retries\":" << r.unstick_retries << ",\"unstick_yields\":" << r.unstick_yields
      << ",\"idle_unsticks\":" << r.idle_unsticks << ",\"yields\":" << r.yields
      << ",\"ban_resets\":" << r.ban_resets << ",\"shared_bans\":" << r.shared_bans
      << ",\"crowd_skips\":" << r.crowd_skips << ",\"route_drops\":" << r.route_drops
