@@ -115,7 +115,8 @@ def case_explore():
               and j["input"]["time_s"] == 30 and j["input"]["start"] == [2, 2], str(j["input"]))
         # Every on/off option is echoed (the tree's stop-26/27 options were missing until stop 27).
         for k in ("disperse_neighbours", "clear_way_out", "unknown_leaves_first", "nearest_leaf_next",
-                  "frontiers_after_leaves", "skip_known_leaves", "margin_escape"):
+                  "frontiers_after_leaves", "skip_known_leaves", "margin_escape", "unstick_retry",
+                  "unstick_right_of_way"):
             check(j["input"].get(k) in ("on", "off"), k)
         check(len(j["robot_poses"]) == 2, str(j["robot_poses"]))
         for p in j["robot_poses"]:

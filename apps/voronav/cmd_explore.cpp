@@ -57,6 +57,8 @@ struct ExploreArgs {
   std::string idle_unstick = on_off(library_defaults().idle_unstick);
   std::string disperse_neighbours = on_off(library_defaults().disperse_neighbours);
   std::string clear_way_out = on_off(library_defaults().clear_way_out);
+  std::string unstick_retry = on_off(library_defaults().unstick_retry);
+  std::string unstick_right_of_way = on_off(library_defaults().unstick_right_of_way);
   std::string yield_to_held = on_off(library_defaults().yield_to_held);
   std::string retry_banned = on_off(library_defaults().retry_banned);
   std::string share_bans = on_off(library_defaults().share_bans);
@@ -180,6 +182,8 @@ void run(const ExploreArgs& a) {
   o.frontier_unstick = a.frontier_unstick == "on";
   o.disperse_neighbours = a.disperse_neighbours == "on";
   o.clear_way_out = a.clear_way_out == "on";
+  o.unstick_retry = a.unstick_retry == "on";
+  o.unstick_right_of_way = a.unstick_right_of_way == "on";
   o.idle_unstick = a.idle_unstick == "on";
   o.yield_to_held = a.yield_to_held == "on";
   o.retry_banned = a.retry_banned == "on";
@@ -314,6 +318,14 @@ void setup(CLI::App& app) {
              "tree: when the watchdog finds a robot on one spot, the robots whose discs touch "
              "its way out to open space (planned without the robots) drive to open space first "
              "(on, ours) or stay (off)");
+  add_on_off(cmd, "--unstick-retry", args->unstick_retry,
+             "tree: a robot the watchdog found on one spot plans its unstick route again every " +
+                 shown(library_defaults().unstick_retry_period) +
+                 " s that it has none, until it has left the spot or the next watchdog (on, "
+                 "ours) or waits for the next watchdog (off)");
+  add_on_off(cmd, "--unstick-right-of-way", args->unstick_right_of_way,
+             "tree: a robot on an unstick route goes first, the robot the guard stops for it "
+             "backs off whatever the indices (on, ours) or the lower index goes first (off)");
   add_on_off(cmd, "--yield-to-held", args->yield_to_held,
              "every method: a robot stopped by a robot in front that is held up itself "
              "backs off whatever their indices (on, ours) or only from a lower index (off)");

@@ -381,6 +381,11 @@ void bind_sim(py::module_& m) {
       .def_readwrite("disperse_range", &ex::ExplorationOptions::disperse_range, "[m]")
       .def_readwrite("clear_way_out", &ex::ExplorationOptions::clear_way_out,
                      "tree (CLI --clear-way-out on|off)")
+      .def_readwrite("unstick_retry", &ex::ExplorationOptions::unstick_retry,
+                     "tree (CLI --unstick-retry on|off)")
+      .def_readwrite("unstick_retry_period", &ex::ExplorationOptions::unstick_retry_period, "[s]")
+      .def_readwrite("unstick_right_of_way", &ex::ExplorationOptions::unstick_right_of_way,
+                     "tree (CLI --unstick-right-of-way on|off)")
       .def_readwrite("yield_to_held", &ex::ExplorationOptions::yield_to_held,
                      "every method (CLI --yield-to-held on|off)")
       .def_readwrite("retry_banned", &ex::ExplorationOptions::retry_banned,

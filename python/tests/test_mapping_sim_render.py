@@ -123,6 +123,8 @@ def test_explore_options_match_the_cli(cli):
     o.margin_escape = False
     o.disperse_neighbours = True
     o.clear_way_out = True
+    o.unstick_retry = True  # no-ops with unstick and margin_escape off: bound and echoed
+    o.unstick_right_of_way = True
     o.unknown_leaves_first = True  # a no-op beside nearest_leaf_next (one dealt leaf each): bound
     o.nearest_leaf_next = True
     o.frontiers_after_leaves = True
@@ -143,7 +145,8 @@ def test_explore_options_match_the_cli(cli):
               "--gain-through-free", "off", "--margin-escape", "off",
               "--disperse-neighbours", "on", "--clear-way-out", "on", "--nearest-leaf-next", "on",
               "--unknown-leaves-first", "on", "--frontiers-after-leaves", "on",
-              "--min-leaf-gain", "0.25", "--stall-reach-radius", "0.12", "--stop-at", "0.97")
+              "--min-leaf-gain", "0.25", "--stall-reach-radius", "0.12", "--stop-at", "0.97",
+              "--unstick-retry", "on", "--unstick-right-of-way", "on")
     # The same options reached the library from both sides, and every one the CLI has was moved
     # off its default (so a swapped pair of switches cannot hide behind equal values).
     cli_input = {k: v for k, v in got["input"].items() if k != "map"}
@@ -155,12 +158,13 @@ def test_explore_options_match_the_cli(cli):
                  "drop_goalless_routes", "guard", "skip_known_leaves", "gain_through_free",
                  "margin_escape", "disperse_neighbours", "clear_way_out", "unknown_leaves_first",
                  "nearest_leaf_next", "frontiers_after_leaves", "min_leaf_gain",
-                 "stall_reach_radius", "stop_at_coverage", "random_turn_rate", "avoid_escape"}
+                 "stall_reach_radius", "stop_at_coverage", "random_turn_rate", "avoid_escape",
+                 "unstick_retry", "unstick_right_of_way"}
     assert cli_flags <= moved, cli_flags - moved
     for key in ("coverage", "distance_m", "feature_points", "leaves", "dispatches", "escapes",
                 "unsticks", "collisions", "guard_wall_stops", "guard_robot_stops", "leaves_skipped",
                 "dispersals", "way_clearances", "leaves_promoted", "leaves_pooled", "frontier_goals",
-                "stalled_robots", "idle_when_explored"):
+                "stalled_robots", "idle_when_explored", "unstick_retries", "unstick_yields"):
         assert res[key] == pytest.approx(got[key], rel=1e-5), key
     default = vn.explore.run(vn.explore.paper_world(), method="tree", robots=2, time_limit=60.0,
                              seed=3, tree_start_time=20.0, start=vn.Vec2(2.0, 2.0))

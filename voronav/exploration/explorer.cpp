@@ -94,6 +94,7 @@ void ExplorationOptions::validate() const {
   positive(stall_time, "stall_time");
   positive(stall_distance, "stall_distance");
   positive(disperse_range, "disperse_range");
+  positive(unstick_retry_period, "unstick_retry_period");
   if (!(stall_reach_radius >= 0.0) || !std::isfinite(stall_reach_radius))
     throw Error("ExplorationOptions.stall_reach_radius", 0,
                 "expected a finite number >= 0 (0 = the planning radius), got " +
@@ -180,7 +181,9 @@ std::string to_json(const ExplorationOptions& o) {
      << ",\"stall_reach_radius\":" << num(o.stall_reach_radius) << ",\"unstick\":" << on(o.unstick)
      << ",\"disperse_neighbours\":" << on(o.disperse_neighbours)
      << ",\"disperse_range\":" << num(o.disperse_range)
-     << ",\"clear_way_out\":" << on(o.clear_way_out)
+     << ",\"clear_way_out\":" << on(o.clear_way_out) << ",\"unstick_retry\":" << on(o.unstick_retry)
+     << ",\"unstick_retry_period\":" << num(o.unstick_retry_period)
+     << ",\"unstick_right_of_way\":" << on(o.unstick_right_of_way)
      << ",\"frontier_unstick\":" << on(o.frontier_unstick)
      << ",\"idle_unstick\":" << on(o.idle_unstick) << ",\"yield_to_held\":" << on(o.yield_to_held)
      << ",\"retry_banned\":" << on(o.retry_banned) << ",\"share_bans\":" << on(o.share_bans)
@@ -218,6 +221,7 @@ std::string to_json(const ExplorationResult& r, bool include_recording) {
      << ",\"watchdog_events\":" << r.watchdog_events << ",\"leg_replans\":" << r.leg_replans
      << ",\"escapes\":" << r.escapes << ",\"unsticks\":" << r.unsticks
      << ",\"dispersals\":" << r.dispersals << ",\"way_clearances\":" << r.way_clearances
+     << ",\"unstick_retries\":" << r.unstick_retries << ",\"unstick_yields\":" << r.unstick_yields
      << ",\"idle_unsticks\":" << r.idle_unsticks << ",\"yields\":" << r.yields
      << ",\"ban_resets\":" << r.ban_resets << ",\"shared_bans\":" << r.shared_bans
      << ",\"crowd_skips\":" << r.crowd_skips << ",\"route_drops\":" << r.route_drops

@@ -154,6 +154,25 @@ struct ExplorationOptions {
   /// even with `unstick` off; the stuck robot then plans no route of its own (it keeps the
   /// reactive search), so they only make room.
   bool clear_way_out = false;
+  /// Ours (issue 14, stop 28), kTree with `unstick`: a robot the progress watchdog found on one
+  /// spot keeps trying to get away until it has left that spot (stall_distance) or the next
+  /// watchdog: every unstick_retry_period [s] that it has no route (its unstick or margin-escape
+  /// route was ended by the 3 s block clock, or none was found) it plans an unstick route again
+  /// around the robots where they are now, and asks the robots touching it to move when boxed in
+  /// (`unstick_retries` counts the routes started so). Without it the next attempt comes with the
+  /// next watchdog, 20 s later, and the third falls on the stall itself (60 s). Traced on willow
+  /// (16 robots, tree, seeds 1, 10, 12): the stuck robot's route out of a dead-end pocket or corner
+  /// was blocked by robots of the random search for 3 s, or it was boxed in until the asked robot
+  /// had left, and the robot then searched reactively in the pocket until it stalled.
+  bool unstick_retry = false;
+  double unstick_retry_period = 2.0;  ///< [s]
+  /// Ours (issue 14, stop 28), kTree: the right of way (a robot the front guard stops because of
+  /// a robot backs off from the lower index, internal/right_of_way.hpp) puts a robot on an unstick
+  /// route first: the robot not on one backs off, whatever the indices (`unstick_yields` counts
+  /// the back-offs for a higher index). Traced on willow (16 robots, tree, seed 9, with
+  /// unstick_retry): robot 15, the highest index, had unstick routes out of a crowd of ten robots
+  /// on their tree legs and backed off from each robot it met, for 60 s.
+  bool unstick_right_of_way = false;
   /// The same for the frontier methods; off by default: on willow (16 robots) it stalled more
   /// robots (frontier 3 and 7 against 0 and 0; an unstick route stopped by the front guard kept
   /// the robot out of the allocation until the watchdog fired again). After the block clock fix
@@ -363,6 +382,10 @@ struct ExplorationResult {
   int idle_unsticks = 0;   ///< of those, by ExplorationOptions::idle_unstick
   int yields = 0;          ///< back-offs from a held-up robot of higher index (yield_to_held)
   int ban_resets = 0;      ///< goalless robots that forgot their soft bans (retry_banned)
+  /// Unstick routes started by a retry (unstick_retry; also counted in unsticks).
+  int unstick_retries = 0;
+  /// Back-offs for a robot of higher index on an unstick route (unstick_right_of_way).
+  int unstick_yields = 0;
   /// Reached goals banned for the whole team as out of sight of their target (share_bans).
   int shared_bans = 0;
   /// (robot, frontier) pairs left out of the nearest-frontier choice as crowded (crowd_limit).

@@ -45,6 +45,31 @@ TEST(RightOfWay, NoBackOffForARobotBehindFarAwayOrMoving) {
                                        true));  // itself
 }
 
+// ExplorationOptions::unstick_right_of_way (stop 28): willow, 16 robots, tree, seed 9 with
+// unstick_retry: robot 15 on an unstick route out of a crowd at (53.4, 20.7) m, robot 7 on its
+// tree leg 0.37 m ahead of it (t = 482 s). By index robot 15 backs off and robot 7 goes on;
+// robot 15 backed off from every robot it met and stayed 60 s.
+TEST(RightOfWay, ARobotOnAnUnstickRouteGoesFirst) {
+  const Pose2 r15{{53.23, 20.81}, -2.46}, r7{{53.17, 20.44}, -2.62};
+  const internal::RightOfWayPeer leg7{7, r7.position, false, false};
+  const internal::RightOfWayPeer unstick15{15, r15.position, false, true};
+  // Without the option: the higher index backs off, whatever either is doing.
+  EXPECT_TRUE(internal::backs_off_for(15, r15, leg7, kContact, true, true, false));
+  // With it: the robot on the unstick route goes on and the other backs off for it.
+  EXPECT_FALSE(internal::backs_off_for(15, r15, leg7, kContact, true, true, true));
+  EXPECT_TRUE(internal::backs_off_for(7, r7, unstick15, kContact, true, false, true));
+  // Both on unstick routes, or neither: by index as before.
+  const internal::RightOfWayPeer unstick7{7, r7.position, false, true};
+  EXPECT_TRUE(internal::backs_off_for(15, r15, unstick7, kContact, true, true, true));
+  EXPECT_FALSE(internal::backs_off_for(7, r7, unstick15, kContact, true, true, true));
+  const internal::RightOfWayPeer leg15{15, r15.position, false, false};
+  EXPECT_TRUE(internal::backs_off_for(15, r15, leg7, kContact, true, false, true));
+  EXPECT_FALSE(internal::backs_off_for(7, r7, leg15, kContact, true, false, true));
+  // Out of contact (1.06 m apart): nobody backs off.
+  const internal::RightOfWayPeer far15{15, {53.23, 21.5}, false, true};
+  EXPECT_FALSE(internal::backs_off_for(7, r7, far15, kContact, true, false, true));
+}
+
 // Room A (3 x 3 m) and room B (6 x 3 m) joined by a 0.2 m slit: ground truth joins them (the
 // coverage counts room B), but no robot fits through, so once the frontiers at the slit are
 // banned the robot has no goal and searches reactively in room A.

@@ -122,14 +122,23 @@ robot::BodyVelocity TeamRun::follow(std::size_t i, double t, bool was_guard_stop
       // backs off for a moment so that a jam in a doorway dissolves.
       // ExplorationOptions::yield_to_held: also from a robot in front that is held up
       // itself (internal/right_of_way.hpp).
+      // ExplorationOptions::unstick_right_of_way: a robot on an unstick route goes first.
+      const bool unstick_first = o.unstick_right_of_way && o.method == ExplorationMethod::kTree;
       if (gv.by_robot)
         for (std::size_t j = 0; j < agents.size(); ++j) {
           const Agent& b = *agents[j];
           const RightOfWayPeer peer{
               static_cast<int>(j), b.body.true_pose().position,
-              b.mode == AgentMode::kFollow && b.block.blocked_for() > 0.5 && t >= b.back_off_until};
-          if (backs_off_for(static_cast<int>(i), pose, peer, 2.0 * body + 0.3, o.yield_to_held)) {
-            if (j > i && t >= a.back_off_until) ++result.yields;
+              b.mode == AgentMode::kFollow && b.block.blocked_for() > 0.5 && t >= b.back_off_until,
+              b.unsticking};
+          if (backs_off_for(static_cast<int>(i), pose, peer, 2.0 * body + 0.3, o.yield_to_held,
+                            a.unsticking, unstick_first)) {
+            if (j > i && t >= a.back_off_until) {
+              if (unstick_first && b.unsticking && !a.unsticking)
+                ++result.unstick_yields;
+              else
+                ++result.yields;
+            }
             a.back_off_until = t + 2.0;
           }
         }
@@ -164,6 +173,16 @@ robot::BodyVelocity TeamRun::follow(std::size_t i, double t, bool was_guard_stop
 void TeamRun::watch(std::size_t i, double t) {
   Agent& a = *agents[i];
   const Vec2 now = a.body.true_pose().position;
+  // ExplorationOptions::unstick_retry: after a watchdog, until the robot has left that spot or
+  // the next watchdog, a robot without a route tries the unstick again every retry period.
+  if (t < a.retry_until) {
+    if (distance(now, a.retry_anchor) > o.stall_distance) {
+      a.retry_until = -1.0;  // it got away
+    } else if (t >= a.next_retry && !a.unsticking) {
+      a.next_retry = t + o.unstick_retry_period;
+      if (unstick(i, t, true)) ++result.unstick_retries;
+    }
+  }
   // Progress watchdog: a robot that has not left a stall_distance circle for a third of
   // stall_time gives up its goal (tree leaf or frontier) and searches reactively for a while.
   if (distance(now, a.wd_anchor) > o.stall_distance) {
@@ -213,6 +232,12 @@ void TeamRun::watchdog_fires(std::size_t i, double t, Vec2 now) {
   a.reactive_until = t + 10.0;
   if (o.disperse_neighbours && o.method == ExplorationMethod::kTree) disperse_around(i, t);
   if (o.clear_way_out && o.method == ExplorationMethod::kTree) clear_way_out(i, t);
+  // ExplorationOptions::unstick_retry: it tries again until it has left this spot.
+  if (o.unstick_retry && o.unstick && o.method == ExplorationMethod::kTree) {
+    a.retry_until = t + o.stall_time / 3.0;
+    a.retry_anchor = now;
+    a.next_retry = t + o.unstick_retry_period;
+  }
   // ExplorationOptions::margin_escape: inside the planning margin, out of it first.
   if (o.margin_escape && margin_escape(a, t, now)) {
     leaving.clear();

@@ -63,6 +63,11 @@ struct Agent {
   bool unsticking = false;     // following an unstick route (ExplorationOptions::unstick)
   bool guard_stopped = false;  // the front guard stopped it at its last route-following step
   bool escaping = false;       // its unstick route leaves the planning margin (margin_escape)
+  // unstick_retry: it retries until retry_until (the next watchdog) while within stall_distance
+  // of retry_anchor, where the watchdog fired; the next retry at next_retry.
+  double retry_until = -1.0;  // [s]
+  double next_retry = 0.0;    // [s]
+  Vec2 retry_anchor;
 };
 
 }  // namespace voronav::exploration::internal
