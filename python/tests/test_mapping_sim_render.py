@@ -123,8 +123,8 @@ def test_explore_options_match_the_cli(cli):
     o.margin_escape = False
     o.disperse_neighbours = True
     o.clear_way_out = True
-    o.unstick_retry = True  # no-ops with unstick and margin_escape off: bound and echoed
-    o.unstick_right_of_way = True
+    o.unstick_retry = False  # no-ops with unstick and margin_escape off: bound and echoed
+    o.unstick_right_of_way = False
     o.unknown_leaves_first = True  # a no-op beside nearest_leaf_next (one dealt leaf each): bound
     o.nearest_leaf_next = True
     o.frontiers_after_leaves = True
@@ -146,7 +146,7 @@ def test_explore_options_match_the_cli(cli):
               "--disperse-neighbours", "on", "--clear-way-out", "on", "--nearest-leaf-next", "on",
               "--unknown-leaves-first", "on", "--frontiers-after-leaves", "on",
               "--min-leaf-gain", "0.25", "--stall-reach-radius", "0.12", "--stop-at", "0.97",
-              "--unstick-retry", "on", "--unstick-right-of-way", "on")
+              "--unstick-retry", "off", "--unstick-right-of-way", "off")
     # The same options reached the library from both sides, and every one the CLI has was moved
     # off its default (so a swapped pair of switches cannot hide behind equal values).
     cli_input = {k: v for k, v in got["input"].items() if k != "map"}

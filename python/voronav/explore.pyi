@@ -86,9 +86,9 @@ class Options:
     disperse_neighbours: bool  # tree: robots without a route near a watchdog-stuck robot move away
     disperse_range: float  # [m]
     clear_way_out: bool  # tree: robots in a watchdog-stuck robot's way out to open space move first (off)
-    unstick_retry: bool  # tree: a watchdog-stuck robot plans its unstick again while it has no route (off)
+    unstick_retry: bool  # tree: a watchdog-stuck robot plans its unstick again while it has no route (on)
     unstick_retry_period: float  # [s]
-    unstick_right_of_way: bool  # tree: a robot on an unstick route goes first at the right of way (off)
+    unstick_right_of_way: bool  # tree: a robot on an unstick route goes first at the right of way (on)
     yield_to_held: bool
     retry_banned: bool  # frontier methods
     share_bans: bool  # frontier methods: a reached goal no robot can observe is banned for all

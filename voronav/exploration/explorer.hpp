@@ -164,15 +164,20 @@ struct ExplorationOptions {
   /// (16 robots, tree, seeds 1, 10, 12): the stuck robot's route out of a dead-end pocket or corner
   /// was blocked by robots of the random search for 3 s, or it was boxed in until the asked robot
   /// had left, and the robot then searched reactively in the pocket until it stalled.
-  bool unstick_retry = false;
+  /// On by default since stop 28 with unstick_right_of_way: together they are the only setting
+  /// measured with 0 stalled robots in every multi-seed run (willow 16 robots included), and paper
+  /// and depot runs are unchanged (31 of 32 identical); willow's tree coverage is 5.1 points lower
+  /// (docs/reproductions/exploration.md, stop 28).
+  bool unstick_retry = true;
   double unstick_retry_period = 2.0;  ///< [s]
   /// Ours (issue 14, stop 28), kTree: the right of way (a robot the front guard stops because of
   /// a robot backs off from the lower index, internal/right_of_way.hpp) puts a robot on an unstick
   /// route first: the robot not on one backs off, whatever the indices (`unstick_yields` counts
   /// the back-offs for a higher index). Traced on willow (16 robots, tree, seed 9, with
   /// unstick_retry): robot 15, the highest index, had unstick routes out of a crowd of ten robots
-  /// on their tree legs and backed off from each robot it met, for 60 s.
-  bool unstick_right_of_way = false;
+  /// on their tree legs and backed off from each robot it met, for 60 s. On by default since
+  /// stop 28 (see unstick_retry).
+  bool unstick_right_of_way = true;
   /// The same for the frontier methods; off by default: on willow (16 robots) it stalled more
   /// robots (frontier 3 and 7 against 0 and 0; an unstick route stopped by the front guard kept
   /// the robot out of the allocation until the watchdog fired again). After the block clock fix

@@ -54,6 +54,7 @@ ExplorationOptions six_in_the_pocket(int seed, bool retry) {
   o.time_limit = 150.0;
   o.stop_at_coverage = 1.01;
   o.unstick_retry = retry;
+  o.unstick_right_of_way = false;  // the retry alone (the right of way is tested apart)
   return o;
 }
 
