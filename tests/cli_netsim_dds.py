@@ -83,6 +83,18 @@ def case_repair_ring_equals_sim():
           f"the ring was sent and answered: {dds[0]}")
 
 
+def case_repair_sense_walk_equals_sim():
+    # Issue #13, stop 28: scenario 3 run 7 with repair_sense_walk: a relay walks to sense the
+    # break, walks on round it and answers the source directly; the same run over DDS.
+    f = os.path.join(ROOT, "data", "netsim", "s3_run7_unanswered.yaml")
+    args = ("--scenario", f, "--method", "decentralized", "--repair-sense-walk", "true")
+    sim = per_run(*args)
+    dds = per_run(*args, "--transport", "dds")
+    same_runs(sim, dds, "s3r7 with repair_sense_walk")
+    check(dds[0]["repair_sense_walks"] >= 1 and dds[0]["repair_answers_sensed_taken"] >= 1,
+          f"a relay walked and its answer was taken: {dds[0]}")
+
+
 def case_killed_relay():
     # The corridor: the route comes back through every robot. Robot 5's process dies after step
     # 20, before the Path answer passes it: the answer is lost at that hop, the source searches

@@ -59,6 +59,10 @@ struct NetsimArgs {
   std::optional<bool> repair_fix_seen_only;
   /// --repair-walk-keep-ratio K (NetSimOptions::repair_walk_keep_ratio).
   std::optional<double> repair_walk_keep_ratio;
+  /// --repair-sense-walk true|false (NetSimOptions::repair_sense_walk).
+  std::optional<bool> repair_sense_walk;
+  /// --repair-sense-wait-s S (NetSimOptions::repair_sense_wait_s).
+  std::optional<double> repair_sense_wait_s;
 };
 
 /// The --repair-* options that were given, written over `o` (the defaults or a scenario file's);
@@ -68,6 +72,8 @@ void apply_repair_overrides(const NetsimArgs& a, sim::NetSimOptions& o) {
   if (a.repair_expand_hops) o.repair_expand_hops = *a.repair_expand_hops;
   if (a.repair_fix_seen_only) o.repair_fix_seen_only = *a.repair_fix_seen_only;
   if (a.repair_walk_keep_ratio) o.repair_walk_keep_ratio = *a.repair_walk_keep_ratio;
+  if (a.repair_sense_walk) o.repair_sense_walk = *a.repair_sense_walk;
+  if (a.repair_sense_wait_s) o.repair_sense_wait_s = *a.repair_sense_wait_s;
 }
 
 /// What to run: `runs` scenarios (paper runs or the one of a file), each with `methods`.
@@ -483,6 +489,9 @@ void run(const NetsimArgs& a) {
                          {"search_copies_ignored", r.search_copies_ignored},
                          {"sensing_walks", r.sensing_walks},
                          {"sensing_walk_m", r.sensing_walk_m},
+                         {"repair_sense_walks", r.repair_sense_walks},
+                         {"repair_sense_walk_m", r.repair_sense_walk_m},
+                         {"repair_sense_answers", r.repair_sense_answers},
                          {"route_used_sensing", r.route_used_sensing},
                          {"repairs", r.repairs},
                          {"sent_by_type", by_type_json(r)},
@@ -631,6 +640,16 @@ void setup(CLI::App& app) {
                 "true|false: with --repair-fix-answer, the source's A* repair of a refused answer "
                 "first keeps to space seen free (options key repair_fix_seen_only; overrides a "
                 "scenario file's)");
+  c->add_option("--repair-sense-walk", args->repair_sense_walk,
+                "true|false: the relay nearest the blocked decentralized source walks to sense "
+                "the break when it knows no way round or had not seen the change, and answers "
+                "its Repair from what it sensed (options key repair_sense_walk; overrides a "
+                "scenario file's)");
+  c->add_option("--repair-sense-wait-s", args->repair_sense_wait_s,
+                ">= 0: with --repair-sense-walk, how long the source waits for a relay that "
+                "walks to sense the break, and how long that relay keeps at it [s] (options key "
+                "repair_sense_wait_s; overrides a scenario file's)")
+      ->check(non_negative());
   c->add_option("--repair-walk-keep-ratio", args->repair_walk_keep_ratio,
                 ">= 0: with --repair-fix-answer, when the walk onto a refused answer the "
                 "source repaired by A* is blocked, it plans again to the same point of the answer "

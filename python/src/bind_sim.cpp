@@ -65,6 +65,9 @@ py::dict metrics_dict(const sm::NetSimMetrics& m) {
   d["repair_requests"] = m.repair_requests;
   d["source_repair_requests"] = m.source_repair_requests;
   d["repair_answers"] = m.repair_answers;
+  d["repair_sense_walks"] = m.repair_sense_walks;
+  d["repair_sense_walk_m"] = m.repair_sense_walk_m;
+  d["repair_sense_answers"] = m.repair_sense_answers;
   sm::SourceRepairTrace::fields([&](const char* name, auto member) { d[name] = m.*member; });
   d["changes_applied"] = m.changes_applied;
   d["changes_on_route"] = m.changes_on_route;
@@ -211,6 +214,8 @@ void bind_sim(py::module_& m) {
       .def_readwrite("repair_expand_hops", &sm::NetSimOptions::repair_expand_hops)
       .def_readwrite("repair_fix_seen_only", &sm::NetSimOptions::repair_fix_seen_only)
       .def_readwrite("repair_walk_keep_ratio", &sm::NetSimOptions::repair_walk_keep_ratio)
+      .def_readwrite("repair_sense_walk", &sm::NetSimOptions::repair_sense_walk)
+      .def_readwrite("repair_sense_wait_s", &sm::NetSimOptions::repair_sense_wait_s)
       .def_readwrite("collect_s", &sm::NetSimOptions::collect_s)
       .def_readwrite("repair_timeout_s", &sm::NetSimOptions::repair_timeout_s)
       .def_readwrite("seed", &sm::NetSimOptions::seed)

@@ -86,6 +86,9 @@ std::string metrics_to_json(const sim::NetSimMetrics& m) {
             {"search_copies_ignored", m.search_copies_ignored},
             {"sensing_walks", m.sensing_walks},
             {"sensing_walk_m", m.sensing_walk_m},
+            {"repair_sense_walks", m.repair_sense_walks},
+            {"repair_sense_walk_m", m.repair_sense_walk_m},
+            {"repair_sense_answers", m.repair_sense_answers},
             {"route_used_sensing", m.route_used_sensing},
             {"relay_travel_m", m.relay_travel_m},
             {"simulated_s", m.simulated_s},
@@ -136,6 +139,9 @@ sim::NetSimMetrics metrics_from_json(const std::string& text) {
     m.search_copies_ignored = j.value("search_copies_ignored", std::uint64_t{0});
     m.sensing_walks = j.value("sensing_walks", 0);
     m.sensing_walk_m = j.value("sensing_walk_m", 0.0);
+    m.repair_sense_walks = j.value("repair_sense_walks", 0);
+    m.repair_sense_walk_m = j.value("repair_sense_walk_m", 0.0);
+    m.repair_sense_answers = j.value("repair_sense_answers", 0);
     m.route_used_sensing = j.value("route_used_sensing", false);
     m.relay_travel_m = j.at("relay_travel_m").get<double>();
     m.simulated_s = j.at("simulated_s").get<double>();

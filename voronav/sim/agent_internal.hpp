@@ -24,6 +24,14 @@ namespace voronav::sim::agent_detail {
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 inline constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 inline constexpr std::uint32_t kRepairFlag = 0x80000000u;
+/// PathMessage::exit_index of a Repair answer sent by a relay that sensed the break
+/// (repair_sense_walk); Repair answers use no exit index otherwise (they join by position).
+inline constexpr std::uint32_t kSensedAnswer = 0xFFFFFFFFu;
+/// PathMessage::exit_index of the short notices of a relay's sensing walk (repair_sense_walk, no
+/// points; `num` is the Repair's with kRepairFlag): it walks to sense the break, or it gave up
+/// without a way.
+inline constexpr std::uint32_t kSenseWalking = 0xFFFFFFFEu;
+inline constexpr std::uint32_t kSenseGaveUp = 0xFFFFFFFDu;
 
 inline std::uint64_t key_of(network::RobotId origin, std::uint32_t id) {
   return (static_cast<std::uint64_t>(origin.value) << 32) | id;

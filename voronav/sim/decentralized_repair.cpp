@@ -468,8 +468,13 @@ void RobotAgent::on(const Header& h, const RepairMessage& m) {
   if (m.broken_to >= m.whole_path.size()) return;
   // The source does not learn them: it meets the block itself, and a relay's Repair of its route
   // is under way (learning would make it ask again about the same break).
+  const auto version = r.map.version();
   if (opt().repair_share_blocks && !is_source()) learn_blocks(m.blocked);
   auto fixed = detour(m.whole_path, m.broken_from, m.broken_to);
+  // repair_sense_walk: it knows no way round, or the Repair told it of blocked cells its map
+  // did not know (it has not seen the change, so its detour may cross it): the robot named by
+  // the hand-off rule goes and senses the break first. A detour it has now still goes out.
+  if ((fixed.empty() || r.map.version() != version) && walks_for_repair(h)) start_repair_walk(m);
   NS_DEBUG("t=%.1f robot %u repair from %u: detour %zu\n", now_, r.id.value, h.sender.value,
            fixed.size());
   if (!fixed.empty()) {
@@ -504,9 +509,18 @@ void RobotAgent::on(const Header& h, const RepairMessage& m) {
 
 void RobotAgent::on_repair_path(PathMessage m, RobotId from) {
   auto& r = r_;
+  if (is_source() && (m.exit_index == kSenseWalking || m.exit_index == kSenseGaveUp)) {
+    // repair_sense_walk: a relay walks to sense the break of the Repair it waits an answer
+    // for (it waits repair_sense_wait_s for it), or gave up (it waits no longer for it).
+    if (repair_out_ && (repair_out_->num | kRepairFlag) == m.num)
+      sense_wait_until_ = m.exit_index == kSenseWalking ? now_ + opt().repair_sense_wait_s : -1.0;
+    return;
+  }
   if (is_source()) {
     ++report_.repair_answers_received;
-    splice_route(m.whole_path, from);
+    const bool sensed = m.exit_index == kSensedAnswer;
+    if (sensed) ++report_.repair_answers_sensed;
+    if (splice_route(m.whole_path, from, sensed) && sensed) ++report_.repair_answers_sensed_taken;
     return;
   }
   if (!m.relays.empty() && m.relays.back() == r.id) m.relays.pop_back();
@@ -566,6 +580,7 @@ bool RobotAgent::expand_repair_ring() {
 /// The source stops waiting for a Repair answer (repaired, re-planned or given up).
 void RobotAgent::repair_done() {
   blocked_since_ = -1.0;
+  sense_wait_until_ = -1.0;
   repair_out_.reset();
   repair_resend_at_ = -1.0;
 }
@@ -595,7 +610,8 @@ void RobotAgent::repair_timers() {
 /// change; the answerer may not have): an answer that still runs into the change is ignored and
 /// the source keeps waiting. The first answer taken ends the wait, so later answers to the same
 /// Repair no longer match the source's position and are ignored. Returns whether it was taken.
-bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId from) {
+/// `sensed`: the answer comes from a relay that sensed the break (repair_sense_walk).
+bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId from, bool sensed) {
   auto dropped = [&] {
     ++report_.repair_answers_dropped;
     return false;
@@ -605,6 +621,14 @@ bool RobotAgent::splice_route(const std::vector<VoronoiPoint>& whole, RobotId fr
   const std::size_t done = next_route_index();
   auto free_ahead = [&](const std::vector<VoronoiPoint>& ahead) {
     if (!opt().repair_check_answer) return true;
+    // An answer from a relay that sensed the break (repair_sense_walk) starts where that relay
+    // stood beside the source (within two robot radii, where its walk to the source stopped).
+    // The source may stand within the robot radius of the change it met, so every move from
+    // its position is blocked in its map (s1r4); it moves onto the answer as its own A* walk
+    // leaves its start cell, and the check starts at the answer's first point.
+    if (sensed && !ahead.empty() &&
+        distance(s.pos, ahead.front().position) <= 2.0 * opt().robot_radius_m)
+      return !find_break(ahead, 0) && seen_near_block(ahead);
     std::vector<VoronoiPoint> rest{VoronoiPoint{s.pos, 1.0f, 0.0f}};
     rest.insert(rest.end(), ahead.begin(), ahead.end());
     return !find_break(rest, 0) && seen_near_block(ahead);

@@ -366,6 +366,61 @@ TEST(DecentralizedRepair, AnUnansweredRepairIsSentAgainFarther) {
   EXPECT_LT(both.source_travel_m, ring.source_travel_m);
 }
 
+// repair_sense_walk (issue #13, stop 28): scenario 3, run 7 (data/netsim/s3_run7_unanswered.yaml),
+// class (a): no robot within repair_hops knows a way round the change, so off no answer comes and
+// no Repair executes (the source replans on its own map). On, the source's nearest neighbour
+// (robot 1, 2 m away) walks to the break, still knows no detour there, walks on round it to the
+// route point past it and answers with the way it drove; the source takes that answer.
+TEST(DecentralizedRepair, ARelaySensesTheBreakAndAnswersWhenNoRobotKnowsAWayRound) {
+  auto f = saved_decentralized_run("s3_run7_unanswered.yaml");
+  f.options.repair_sense_walk = false;
+  const auto off = run_netsim(f.scenario, f.options).metrics;
+  ASSERT_TRUE(off.success);
+  EXPECT_EQ(off.repair_answers_received, 0) << "nobody within two hops answers";
+  EXPECT_EQ(off.repairs_executed, 0);
+  EXPECT_EQ(off.repair_sense_walks, 0);
+  EXPECT_EQ(off.repair_answers_sensed, 0);
+
+  NetSimOptions o = f.options;
+  o.repair_sense_walk = true;
+  const auto on = run_netsim(f.scenario, o).metrics;
+  ASSERT_TRUE(on.success);
+  EXPECT_EQ(on.repair_sense_walks, 1) << "one robot walks: the hand-off rule names one";
+  EXPECT_GT(on.repair_sense_walk_m, 0.0);
+  EXPECT_EQ(on.repair_sense_answers, 1);
+  EXPECT_EQ(on.repair_answers_sensed, 1);
+  EXPECT_EQ(on.repair_answers_sensed_taken, 1) << "the sensed answer is free in the source's map";
+  EXPECT_GE(on.repairs_executed, 1);
+  EXPECT_EQ(on.repair_answers_refused, 0);
+  EXPECT_LT(on.replans, off.replans) << "the source drives the answer, not its own A* walk";
+}
+
+// repair_sense_walk (issue #13, stop 28): scenario 2, run 9 (data/netsim/s2_run9_refused.yaml),
+// class (b): the one answer comes from robot 1, which had not seen the closed door; its detour
+// crosses the door strip beside the cell the Repair carried and the source refuses it. On, robot
+// 3 (the source's only neighbour, still on a bridge walk of the Search) walks to the break and
+// says so (the source waits for it), finds no detour there once it has seen the door, walks round
+// it and answers with the way it drove: the source takes that answer instead of its own A* walk.
+TEST(DecentralizedRepair, ARelaySensesTheBreakWhenTheAnswerersMapsAreStale) {
+  auto f = saved_decentralized_run("s2_run9_refused.yaml");
+  f.options.repair_sense_walk = false;
+  const auto off = run_netsim(f.scenario, f.options).metrics;
+  ASSERT_TRUE(off.success);
+  EXPECT_GE(off.repair_answers_refused, 1);
+  EXPECT_EQ(off.repair_answers_refused, off.repair_answers_received) << "every answer stale";
+  EXPECT_EQ(off.repairs_executed, 0);
+
+  NetSimOptions o = f.options;
+  o.repair_sense_walk = true;
+  const auto on = run_netsim(f.scenario, o).metrics;
+  ASSERT_TRUE(on.success);
+  EXPECT_EQ(on.repair_answers_refused, off.repair_answers_refused) << "the stale answer still goes";
+  EXPECT_EQ(on.repair_sense_walks, 1);
+  EXPECT_EQ(on.repair_answers_sensed_taken, 1);
+  EXPECT_GE(on.repairs_executed, 1);
+  EXPECT_LT(on.source_travel_m, off.source_travel_m);
+}
+
 // repair_fix_seen_only (issue #13, stop 22): scenario 2, run 7 (data/netsim/s2_run7_fix_seen.yaml).
 // With repair_fix_answer the source repairs a refused answer by A* on its own map; with
 // repair_fix_seen_only that A* first keeps to cells the source knows free and the answer's free

@@ -658,6 +658,10 @@ void RobotAgent::walk_progress(bool arrived) {
     sensing_walk_progress(arrived);
     return;
   }
+  if (r.walk == Walk::kRepair) {
+    repair_walk_progress(arrived);
+    return;
+  }
   if (r.walk == Walk::kBack) {
     if (arrived) r.walk = Walk::kIdle;
     return;

@@ -75,6 +75,8 @@ void NetSimOptions::validate() const {
     throw Error("netsim.search_activity_s", 0, "expected a finite number >= 0");
   if (!(repair_resend_s >= 0.0) || !std::isfinite(repair_resend_s))
     throw Error("netsim.repair_resend_s", 0, "expected a finite number >= 0");
+  if (!(repair_sense_wait_s >= 0.0) || !std::isfinite(repair_sense_wait_s))
+    throw Error("netsim.repair_sense_wait_s", 0, "expected a finite number >= 0");
   if (!(repair_rejoin_m >= 0.0) || !std::isfinite(repair_rejoin_m))
     throw Error("netsim.repair_rejoin_m", 0, "expected a finite number >= 0");
   if (!(path_wait_s >= 0.0) || !std::isfinite(path_wait_s))

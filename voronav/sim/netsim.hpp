@@ -208,6 +208,23 @@ struct NetSimOptions {
   /// longer test what Table 7 asks (stop 25). make_paper_run places the changes with both off
   /// whatever their defaults (scenarios.cpp probe_options).
   double repair_walk_keep_ratio = 0.0;
+  /// Decentralized, beyond the paper (issue #13, stop 28): a relay goes and senses the break of
+  /// a Repair on the source's behalf, as figure 18's relays do for the Search. The robot that
+  /// heard the Repair from the source itself and is nearest the source of the robots it sees
+  /// there walks to the source's side of the break when it knows no detour (class (a), stop 22),
+  /// or when the Repair told it blocked cells its map did not know (its map is stale there: its
+  /// detour would cross the change, class (b), stop 25), if its way there is at most half of what
+  /// it drives in repair_sense_wait_s. It tells the source (a short notice), which then waits up
+  /// to repair_sense_wait_s for it. Once it has sensed the break it answers from its own map; if
+  /// it still knows no detour it walks on, on its own (optimistic) map, to the route point past
+  /// the break and answers with the way it drove (or tells the source it gave up). Its answer
+  /// goes to the source directly (marked in PathMessage::exit_index; counted in
+  /// repair_answers_sensed / repair_answers_sensed_taken, repair_sense_walks, _walk_m, _answers).
+  /// Off by default (docs/reproductions/networked.md, stop 28).
+  bool repair_sense_walk = false;
+  /// With repair_sense_walk: how long the source waits for a relay that said it walks to sense
+  /// the break, and how long that relay keeps at it [s].
+  double repair_sense_wait_s = 60.0;
   /// Decentralized, not in the paper: the source re-sends its Repair (repair_resend_s) only when
   /// a robot is in radio range that was not at any earlier send: a robot that had it ignores it
   /// (Table 4 line 1), so a re-send to the same neighbours only adds traffic (s4r6: 36 of 43
@@ -321,6 +338,11 @@ struct NetSimMetrics : SourceRepairTrace {
   int sensing_walks = 0;
   double sensing_walk_m = 0.0;
   bool route_used_sensing = false;
+  /// repair_sense_walk: walks relays started to sense a Repair's break, the metres they drove on
+  /// them, and the answers they sent from what they sensed (all robots).
+  int repair_sense_walks = 0;
+  double repair_sense_walk_m = 0.0;
+  int repair_sense_answers = 0;
   double simulated_s = 0.0;
   double wall_s = 0.0;
   std::vector<RobotMetrics> robots;

@@ -63,6 +63,9 @@ NetSimMetrics aggregate_metrics(const std::vector<AgentReport>& robots, std::siz
     M.sensing_walks += a.sensing_walks;
     M.sensing_walk_m += a.sensing_walk_m;
     M.route_used_sensing = M.route_used_sensing || a.route_used_sensing;
+    M.repair_sense_walks += a.repair_sense_walks;
+    M.repair_sense_walk_m += a.repair_sense_walk_m;
+    M.repair_sense_answers += a.repair_sense_answers;
     for (std::size_t t = 0; t < by_type.size(); ++t) {
       by_type[t].messages += rm.sent_by_type[t].messages;
       by_type[t].bytes += rm.sent_by_type[t].bytes;
@@ -302,6 +305,8 @@ void RobotAgent::timers() {
     if (r_.path_deadline >= 0.0 && now_ + 1e-9 >= r_.path_deadline) select_path();
     if (r_.bridge_at >= 0.0 && now_ + 1e-9 >= r_.bridge_at) start_bridge();
     pending_step();
+    if (repair_walk_ && (r_.walk != Walk::kRepair || now_ + 1e-9 >= repair_walk_until_))
+      end_repair_walk();  // taken over by a new Search, or the source no longer waits
     if (!is_source()) return;
     if (!route_.empty()) boxed_in_ = false;
     if (route_.empty() && boxed_in_ && r_.walk == Walk::kIdle && now_ + 1e-9 >= search_deadline_) {
@@ -312,7 +317,9 @@ void RobotAgent::timers() {
         report_.search_attempts < opt().max_search_attempts)
       retry_search();
     repair_timers();
-    if (!route_.empty() && blocked_since_ >= 0.0 &&
+    // repair_sense_walk: a relay said it walks to sense the break; wait for it.
+    const bool sensing = sense_wait_until_ >= 0.0 && now_ + 1e-9 < sense_wait_until_;
+    if (!route_.empty() && blocked_since_ >= 0.0 && !sensing &&
         now_ - blocked_since_ >= opt().repair_timeout_s && !expand_repair_ring()) {
       repair_done();
       // No Repair answer: the source plans a way on its own map to the first route point past
@@ -380,7 +387,9 @@ void RobotAgent::move(double now_s) {
   report_.metrics.travel_m += moved;
   if (is_source() && moved > 0.0) trail_.push_back(r.pos);
   if (is_source() && r.walk == Walk::kSense) report_.sensing_walk_m += moved;
-  if (!is_source() && (r.walk == Walk::kBridge || r.walk == Walk::kDestination)) {
+  if (r.walk == Walk::kRepair) report_.repair_sense_walk_m += moved;
+  if (!is_source() && (r.walk == Walk::kBridge || r.walk == Walk::kDestination ||
+                       (r.walk == Walk::kRepair && repair_walk_phase_ == 1))) {
     // Trail points every 2 m, and before any corner: each straight step between two of them is
     // known free (the robot drove it and sensed around it).
     if (r.walk_trail.empty()) {

@@ -84,6 +84,10 @@ struct AgentReport : SourceRepairTrace {
   int sensing_walks = 0;
   double sensing_walk_m = 0.0;
   bool route_used_sensing = false;
+  /// repair_sense_walk (relays): NetSimMetrics::repair_sense_walks, _walk_m, _answers.
+  int repair_sense_walks = 0;
+  double repair_sense_walk_m = 0.0;
+  int repair_sense_answers = 0;
 };
 
 /// Sums the robots' reports (eq. 3–9) into the metrics of a run; `source` is the source's index.
@@ -129,7 +133,7 @@ class RobotAgent {
     std::size_t offset = 0;  // first of its points in s_in.open_points
     std::size_t count = 0;
   };
-  enum class Walk { kIdle, kBridge, kDestination, kBack, kSense };
+  enum class Walk { kIdle, kBridge, kDestination, kBack, kSense, kRepair };
   struct State {
     network::RobotId id;
     Vec2 pos;
@@ -284,7 +288,8 @@ class RobotAgent {
   void check_relay_route();
   void on(const network::Header& h, const network::RepairMessage& m);
   void on_repair_path(network::PathMessage m, network::RobotId from);
-  bool splice_route(const std::vector<network::VoronoiPoint>& whole, network::RobotId from);
+  bool splice_route(const std::vector<network::VoronoiPoint>& whole, network::RobotId from,
+                    bool sensed = false);
   void repair_timers();
   void repair_done();
   bool expand_repair_ring();
@@ -294,6 +299,13 @@ class RobotAgent {
   void check_source_route();
   bool replan_to_route();
   [[nodiscard]] std::uint32_t next_repair_num();
+  // repair_sense_walk (decentralized_repair_walk.cpp)
+  [[nodiscard]] bool walks_for_repair(const network::Header& h);
+  bool start_repair_walk(const network::RepairMessage& m);
+  void repair_walk_progress(bool arrived);
+  void answer_sensed(const std::vector<network::VoronoiPoint>& fixed);
+  void end_repair_walk();
+  void send_sense_notice(std::uint32_t what);
   // centralized baseline
   void start_request();
   void on(const network::Header& h, const network::RequestMessage& m);
@@ -352,6 +364,15 @@ class RobotAgent {
   double repair_resend_gap_ = 0.0;
   // Source (repair_expand_hops): repair_answers_received when it sent repair_out_.
   int answers_at_repair_ = 0;
+  // Relay (repair_sense_walk): the Repair whose break it walks to sense, the walk's phase (0: to
+  // the source's side of the break, 1: on round it to the route point past it) and when it
+  // gives up (the source no longer waits then).
+  std::optional<network::RepairMessage> repair_walk_;
+  int repair_walk_phase_ = 0;
+  double repair_walk_until_ = -1.0;
+  // Source (repair_sense_walk): until when it waits for a relay that said it walks to sense the
+  // break of its Repair (-1: no such relay).
+  double sense_wait_until_ = -1.0;
   // Relay: the ends of the break of its saved path it already asked about (asked once).
   std::optional<std::pair<Vec2, Vec2>> relay_break_;
   // Source: the cells that blocked its route at its latest break (repair_check_seen).

@@ -201,6 +201,8 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
            "repair_walk_keep_ratio",
            "repair_resend_new_only",
            "repair_check_seen",
+           "repair_sense_walk",
+           "repair_sense_wait_s",
            "path_fallback_after_retries",
            "search_timeout_per_m",
            "search_activity_s",
@@ -247,6 +249,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   nonneg("repair_resend_s", o.repair_resend_s);
   nonneg("repair_rejoin_m", o.repair_rejoin_m);
   nonneg("repair_walk_keep_ratio", o.repair_walk_keep_ratio);
+  nonneg("repair_sense_wait_s", o.repair_sense_wait_s);
   nonneg("search_timeout_per_m", o.search_timeout_per_m);
   nonneg("search_activity_s", o.search_activity_s);
   auto flag = [&](const char* key, bool& v) {
@@ -262,6 +265,7 @@ void read_options(const Reader& rd, const YAML::Node& n, NetSimScenarioFile& f) 
   flag("repair_fix_seen_only", o.repair_fix_seen_only);
   flag("repair_resend_new_only", o.repair_resend_new_only);
   flag("repair_check_seen", o.repair_check_seen);
+  flag("repair_sense_walk", o.repair_sense_walk);
   flag("path_fallback_after_retries", o.path_fallback_after_retries);
   flag("frontier_by_points", o.frontier_by_points);
   flag("walk_replan_whole_map", o.walk_replan_whole_map);
@@ -512,6 +516,8 @@ void save_netsim_scenario(const std::string& path, const NetSimScenario& sc,
       << "  repair_walk_keep_ratio: " << fmt(o.repair_walk_keep_ratio) << "\n"
       << "  repair_resend_new_only: " << (o.repair_resend_new_only ? "true" : "false") << "\n"
       << "  repair_check_seen: " << (o.repair_check_seen ? "true" : "false") << "\n"
+      << "  repair_sense_walk: " << (o.repair_sense_walk ? "true" : "false") << "\n"
+      << "  repair_sense_wait_s: " << fmt(o.repair_sense_wait_s) << "\n"
       << "  path_fallback_after_retries: " << (o.path_fallback_after_retries ? "true" : "false")
       << "\n"
       << "  search_timeout_per_m: " << fmt(o.search_timeout_per_m) << "\n"

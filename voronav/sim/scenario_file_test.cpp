@@ -66,6 +66,8 @@ void expect_same_options(const NetSimOptions& a, const NetSimOptions& b) {
   EXPECT_EQ(a.repair_fix_answer, b.repair_fix_answer);
   EXPECT_EQ(a.repair_fix_seen_only, b.repair_fix_seen_only);
   EXPECT_EQ(a.repair_walk_keep_ratio, b.repair_walk_keep_ratio);
+  EXPECT_EQ(a.repair_sense_walk, b.repair_sense_walk);
+  EXPECT_EQ(a.repair_sense_wait_s, b.repair_sense_wait_s);
   EXPECT_EQ(a.path_fallback_after_retries, b.path_fallback_after_retries);
   EXPECT_EQ(a.search_timeout_per_m, b.search_timeout_per_m);
   EXPECT_EQ(a.search_activity_s, b.search_activity_s);
@@ -126,6 +128,8 @@ TEST(ScenarioFile, PaperRunWithEveryOptionSetRoundTripsExactly) {
   o.repair_fix_answer = !o.repair_fix_answer;
   o.repair_fix_seen_only = !o.repair_fix_seen_only;
   o.repair_walk_keep_ratio = 1.25;
+  o.repair_sense_walk = !o.repair_sense_walk;
+  o.repair_sense_wait_s = 42.5;
   o.path_fallback_after_retries = false;
   o.search_timeout_per_m = 2.75;
   o.search_activity_s = 31.5;

@@ -35,6 +35,8 @@ struct SourceRepairTrace {
   int repair_answers_fixed_seen = 0;
   /// repair_walk_keep_ratio: replans of a blocked walk that kept the walk's route point.
   int repair_walk_targets_kept = 0;
+  /// repair_sense_walk: answers from a relay that sensed the break (received, taken).
+  int repair_answers_sensed = 0, repair_answers_sensed_taken = 0;
 
   /// Calls f(name, member pointer) for every counter, in output order; the name is the JSON key.
   template <class F>
@@ -52,6 +54,8 @@ struct SourceRepairTrace {
     f("repair_rings_expanded", &T::repair_rings_expanded);
     f("repair_answers_fixed_seen", &T::repair_answers_fixed_seen);
     f("repair_walk_targets_kept", &T::repair_walk_targets_kept);
+    f("repair_answers_sensed", &T::repair_answers_sensed);
+    f("repair_answers_sensed_taken", &T::repair_answers_sensed_taken);
   }
 };
 

@@ -60,6 +60,9 @@ json agent_report_json(const sim::AgentReport& a) {
             {"search_copies_ignored", a.search_copies_ignored},
             {"sensing_walks", a.sensing_walks},
             {"sensing_walk_m", a.sensing_walk_m},
+            {"repair_sense_walks", a.repair_sense_walks},
+            {"repair_sense_walk_m", a.repair_sense_walk_m},
+            {"repair_sense_answers", a.repair_sense_answers},
             {"route_used_sensing", a.route_used_sensing}};
   put_repair_trace(j, a);
   return j;
@@ -89,6 +92,9 @@ sim::AgentReport agent_report_from(const json& j) {
   a.search_copies_ignored = j.value("search_copies_ignored", 0);
   a.sensing_walks = j.value("sensing_walks", 0);
   a.sensing_walk_m = j.value("sensing_walk_m", 0.0);
+  a.repair_sense_walks = j.value("repair_sense_walks", 0);
+  a.repair_sense_walk_m = j.value("repair_sense_walk_m", 0.0);
+  a.repair_sense_answers = j.value("repair_sense_answers", 0);
   a.route_used_sensing = j.value("route_used_sensing", false);
   return a;
 }
