@@ -4,7 +4,9 @@
 //  - exhaustive_search(): every order of the urgent group (branch and bound on the makespan).
 //  - genetic_search(): GA with DPX crossover and greedy reconnection by the largest M + D,
 //    mutation removing 4..7 edges, 3-opt local search, elitism and the convergence rule of
-//    sections 4.2 and 5.1, all parameters in GaOptions, seeded.
+//    sections 4.2 and 5.1, all parameters in GaOptions, seeded; beyond the paper (issue #16,
+//    options, off by default): other 3-opt neighbourhoods, an iterated local search and a polish
+//    after the GA, and named settings (ga_preset()).
 // Orders are compared by (makespan, sum of arrivals), so that among orders with the same makespan
 // the one that lets the others arrive earlier wins (the paper only names the makespan).
 #pragma once
@@ -128,7 +130,8 @@ struct GaOptions {
   /// (makespan, sum of arrivals) improves. Every kick draws from its own stream seeded from the
   /// main one, so the result does not depend on the thread count. Stops after this many steps in
   /// a row without a better order, after max_rounds steps, or at ils_evaluations. 0 = none (the
-  /// paper's GA). Never returns an order worse than the GA's best.
+  /// paper's GA). Never returns an order worse than the GA's best. Needs the 3-opt
+  /// (three_opt_iterations >= 0) and at least 3 searched robots; skipped otherwise.
   int ils_patience = 0;
   /// Random segment moves per kick of the iterated local search (>= 1).
   int ils_kick = 2;
