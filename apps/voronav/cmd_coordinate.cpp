@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <iostream>
 #include <numbers>
+#include <set>
+#include <string>
 
 #include "cli_common.hpp"
 #include "command.hpp"
@@ -53,6 +55,11 @@ struct CoordArgs {
   int ga_stall = 0;
   int ga_delayed_gate = 0;
   int ga_polish = 0;
+  int ga_ils = 0;
+  std::string ga_preset = "paper";
+  std::set<std::string> given;  ///< the GA options given on the command line (over the preset)
+  int ga_ils_kick = 2;
+  std::size_t ga_ils_evaluations = 0;
   double node_spacing = -1.0;
   bool no_reduction = false;
   bool json = false;
@@ -356,17 +363,25 @@ void run(const CoordArgs& a) {
   co::CoordinateOptions opt;
   opt.map = sc.map_options;
   opt.search.kind = co::parse_search_kind(a.search);
-  opt.search.ga.seed = a.seed;
-  opt.search.ga.three_opt_iterations = a.ga_three_opt;
-  opt.search.ga.three_opt_order = co::parse_three_opt_order(a.ga_three_opt_order);
-  opt.search.ga.three_opt_depth = a.ga_three_opt_depth;
-  opt.search.ga.three_opt_patience = a.ga_three_opt_patience;
-  opt.search.ga.threads = a.ga_threads;
-  opt.search.ga.workers = a.ga_workers;
-  opt.search.ga.population = a.ga_population;
-  opt.search.ga.stall_generations = a.ga_stall;
-  opt.search.ga.delayed_gate = a.ga_delayed_gate;
-  opt.search.ga.polish_sweeps = a.ga_polish;
+  // --ga-preset first; a GA option given on the command line overrides the preset's value.
+  opt.search.ga = co::ga_preset(a.ga_preset);
+  auto& g = opt.search.ga;
+  const auto given = [&](const char* name) { return a.given.count(name) > 0; };
+  g.seed = a.seed;
+  if (given("--ga-three-opt")) g.three_opt_iterations = a.ga_three_opt;
+  if (given("--ga-three-opt-order"))
+    g.three_opt_order = co::parse_three_opt_order(a.ga_three_opt_order);
+  if (given("--ga-three-opt-depth")) g.three_opt_depth = a.ga_three_opt_depth;
+  if (given("--ga-three-opt-patience")) g.three_opt_patience = a.ga_three_opt_patience;
+  if (given("--ga-threads")) g.threads = a.ga_threads;
+  if (given("--ga-workers")) g.workers = a.ga_workers;
+  if (given("--ga-population")) g.population = a.ga_population;
+  if (given("--ga-stall")) g.stall_generations = a.ga_stall;
+  if (given("--ga-delayed-gate")) g.delayed_gate = a.ga_delayed_gate;
+  if (given("--ga-polish")) g.polish_sweeps = a.ga_polish;
+  if (given("--ga-ils")) g.ils_patience = a.ga_ils;
+  if (given("--ga-ils-kick")) g.ils_kick = a.ga_ils_kick;
+  if (given("--ga-ils-evaluations")) g.ils_evaluations = a.ga_ils_evaluations;
   opt.search.edf_reduction = !a.no_reduction;
   const co::CoordinationResult r = co::coordinate(agents, opt);
 
@@ -419,6 +434,9 @@ void run(const CoordArgs& a) {
       {"ga_polish_improvements", r.search.polish_improvements},
       {"ga_polish_sweeps", r.search.polish_sweeps},
       {"ga_makespan_before_polish", r.search.makespan_before_polish},
+      {"ga_ils_steps", r.search.ils_steps},
+      {"ga_ils_improvements", r.search.ils_improvements},
+      {"ga_makespan_before_ils", r.search.makespan_before_ils},
       {"at_start", co::to_string(opt.map.at_start)},
       {"at_goal", co::to_string(opt.map.at_goal)},
       {"agents", js_agents},
@@ -560,6 +578,26 @@ void setup(CLI::App& app) {
                   "on the best order only, until a sweep improves nothing (0 = none, the paper's)")
       ->check(non_negative())
       ->capture_default_str();
+  cmd->add_option("--ga-preset", a->ga_preset,
+                  "GA settings by name, each GA option given overrides its value: paper (the "
+                  "paper's GA, default); fast (issue #16: --ga-three-opt-order critical-delayed "
+                  "--ga-delayed-gate 10 --ga-stall 2 --ga-ils 15 --ga-ils-kick 2 "
+                  "--ga-ils-evaluations 250000 --ga-threads 2)")
+      ->check(CLI::IsMember({"paper", "fast"}))
+      ->capture_default_str();
+  cmd->add_option("--ga-ils", a->ga_ils,
+                  "GA: after the GA, iterated local search from the best order: steps of 10 "
+                  "kicks (--ga-ils-kick random segment moves, then the child's 3-opt), stopping "
+                  "after this many steps in a row without a better order (0 = none, the paper's)")
+      ->check(non_negative())
+      ->capture_default_str();
+  cmd->add_option("--ga-ils-kick", a->ga_ils_kick, "GA, --ga-ils: random segment moves per kick")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--ga-ils-evaluations", a->ga_ils_evaluations,
+                  "GA, --ga-ils: start no ILS step once the whole search has made this many "
+                  "evaluations (0 = no cap)")
+      ->capture_default_str();
   cmd->add_option("--ga-population", a->ga_population, "GA: population size (0 = N, the paper's)")
       ->check(non_negative())
       ->capture_default_str();
@@ -584,7 +622,15 @@ void setup(CLI::App& app) {
   cmd->add_option("--mcap", a->mcap,
                   "Write a ROS 2 bag (MCAP): /map, /robot_N/plan, /tf, /robots, /collision_boxes, "
                   "/events (docs/ros.md)");
-  cmd->callback([a] { run(*a); });
+  cmd->callback([a, cmd] {
+    for (const char* name : {"--ga-three-opt", "--ga-three-opt-order", "--ga-three-opt-depth",
+                             "--ga-three-opt-patience", "--ga-threads", "--ga-workers",
+                             "--ga-population", "--ga-stall", "--ga-delayed-gate", "--ga-polish",
+                             "--ga-ils", "--ga-ils-kick", "--ga-ils-evaluations"}) {
+      if (cmd->count(name) > 0) a->given.insert(name);
+    }
+    run(*a);
+  });
 }
 
 const Command reg{{"coordinate", setup, 40}};

@@ -5,6 +5,7 @@
 
 #include "common.hpp"
 #include "voronav/coordination/coordinator.hpp"
+#include "voronav/coordination/priority_search.hpp"
 #include "voronav/coordination/scenario.hpp"
 #include "voronav/coordination/schedule_io.hpp"
 #include "voronav/mapping/occupancy_map.hpp"
@@ -407,9 +408,10 @@ void bind_coordination(py::module_& m) {
       "coordinate",
       [](const std::vector<co::Agent>& agents, const std::string& search, std::uint64_t seed,
          bool edf_reduction, double node_spacing, co::AtStart at_start, co::AtGoal at_goal,
-         bool verify) {
+         bool verify, const std::string& ga_preset) {
         co::CoordinateOptions o;
         o.search.kind = co::parse_search_kind(search);
+        o.search.ga = co::ga_preset(ga_preset);
         o.search.ga.seed = seed;
         o.search.edf_reduction = edf_reduction;
         o.map.node_spacing = node_spacing;
@@ -428,9 +430,10 @@ void bind_coordination(py::module_& m) {
       py::arg("agents"), py::arg("search") = "ga", py::arg("seed") = 1,
       py::arg("edf_reduction") = true, py::arg("node_spacing") = 0.0,
       py::arg("at_start") = co::AtStart::kWait, py::arg("at_goal") = co::AtGoal::kStay,
-      py::arg("verify") = true,
+      py::arg("verify") = true, py::arg("ga_preset") = "paper",
       "Collision boxes, (M,D) network, priority search (none | exhaustive | edf | ga), start "
-      "delays, continuous-time check. node_spacing [m] (0 = automatic).");
+      "delays, continuous-time check. node_spacing [m] (0 = automatic). ga_preset: the GA's "
+      "settings by name, 'paper' (the paper's GA) or 'fast' (issue #16, CLI --ga-preset).");
   cm.def(
       "verify_schedule",
       [](const std::vector<co::Agent>& agents, const std::vector<double>& delays,

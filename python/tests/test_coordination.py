@@ -46,6 +46,22 @@ def test_mapf_scenario_equals_cli(data, cli):
     assert out["valid"] == r.valid
 
 
+def test_ga_preset_fast_equals_cli(data, cli):
+    m, s = str(data / "mapf/random-32-32-20.map"), str(data / "mapf/random-32-32-20-random-1.scen")
+    sc = co.load_mapf(m, s, 30)
+    agents = sc.plan_agents()
+    r = co.coordinate(agents, search="ga", seed=2, ga_preset="fast", at_start="appear",
+                      at_goal="leave")
+    out = cli("coordinate", "--map", m, "--scen", s, "--agents", "30", "--search", "ga", "--seed",
+              "2", "--ga-preset", "fast", "--at-start", "appear", "--at-goal", "leave")
+    assert out["three_opt_order"] == "critical-delayed"
+    assert out["ga_ils_steps"] >= 15  # patience 15: the ILS ran
+    assert out["makespan"] == pytest.approx(r.makespan)
+    assert [a["delay"] for a in out["agents"]] == pytest.approx(r.delays)
+    with pytest.raises(vn.Error, match="paper|fast"):
+        co.coordinate(agents, search="ga", ga_preset="quick")
+
+
 def test_scenario_from_lists_with_map():
     import numpy as np
 

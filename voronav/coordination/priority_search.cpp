@@ -140,6 +140,22 @@ ThreeOptOrder parse_three_opt_order(std::string_view s) {
               "expected paper|critical-first|critical-delayed, got '" + std::string(s) + "'");
 }
 
+GaOptions ga_preset(std::string_view name) {
+  GaOptions o;
+  if (name == "paper") return o;
+  if (name == "fast") {
+    o.three_opt_order = ThreeOptOrder::kCriticalDelayed;
+    o.delayed_gate = 10;
+    o.stall_generations = 2;
+    o.ils_patience = 15;
+    o.ils_kick = 2;
+    o.ils_evaluations = 250000;
+    o.threads = 2;
+    return o;
+  }
+  throw Error("--ga-preset", 0, "expected paper|fast, got '" + std::string(name) + "'");
+}
+
 SearchKind parse_search_kind(std::string_view s) {
   if (s == "none") return SearchKind::kNone;
   if (s == "exhaustive") return SearchKind::kExhaustive;
@@ -484,6 +500,64 @@ class Ga {
     }
   }
 
+  /// One kick of the iterated local search (GaOptions::ils_patience): ils_kick random segment
+  /// moves of `seq` (the paper's 3-opt draw, taken whatever they cost), then the child's 3-opt
+  /// with `best` as the delayed gate (kCriticalDelayed: the sweeps only when critical-first brings
+  /// the kick back to no worse than `best`); every draw from the stream `seed`.
+  Individual make_kick(const std::vector<int>& seq, std::uint64_t seed, const Resolution& best) {
+    rng_.seed(seed);
+    std::vector<int> child(seq), cand;
+    int from = 0, to = 0;
+    for (int k = 0; k < o_.ils_kick; ++k) {
+      while (!internal::GaOperators::segment_move(child, rng_, cand, from, to)) {
+      }
+      child.swap(cand);
+    }
+    Individual ind = make(std::move(child));
+    three_opt(ind, &best);
+    return ind;
+  }
+
+  /// GaOptions::ils_patience: steps of crossovers_per_generation kicks of `best` on the helpers
+  /// (kick c on helper c mod T, its stream seed drawn here in kick order, so the result depends
+  /// on neither T nor the threads' timing); the best kick of a step replaces `best` when better.
+  /// Stops after ils_patience steps in a row without a better order, after max_rounds steps, or
+  /// once the whole search has made ils_evaluations evaluations (0 = no such cap).
+  void iterated_local_search(Individual& best, SearchResult& out,
+                             std::vector<std::unique_ptr<Ga>>& helpers) {
+    const int count = o_.crossovers_per_generation;
+    std::vector<std::uint64_t> seeds(static_cast<std::size_t>(count));
+    std::vector<Individual> kicks;
+    auto evaluations = [&] {
+      std::size_t e = evaluations_;
+      for (const auto& h : helpers)
+        e += h->evaluations_;
+      return e;
+    };
+    int idle = 0;
+    while (idle < o_.ils_patience && out.ils_steps < o_.max_rounds &&
+           (o_.ils_evaluations == 0 || evaluations() < o_.ils_evaluations)) {
+      for (auto& sd : seeds)
+        sd = rng_();
+      kicks.assign(static_cast<std::size_t>(count), Individual{});
+      internal::run_strided(count, static_cast<int>(helpers.size()), [&](int t, int c) {
+        kicks[static_cast<std::size_t>(c)] = helpers[static_cast<std::size_t>(t)]->make_kick(
+            best.seq, seeds[static_cast<std::size_t>(c)], best.res);
+      });
+      ++out.ils_steps;
+      std::size_t top = 0;
+      for (std::size_t c = 1; c < kicks.size(); ++c)
+        if (better(kicks[c].res, kicks[top].res)) top = c;
+      if (better(kicks[top].res, best.res)) {
+        best = std::move(kicks[top]);
+        ++out.ils_improvements;
+        idle = 0;
+      } else {
+        ++idle;
+      }
+    }
+  }
+
   /// The resolution a child must match for the delayed sweeps (GaOptions::delayed_gate): the
   /// gate-th best of the population the parents come from; nullptr = no gate.
   const Resolution* gate_of(const std::vector<Individual>& pop, int pop_size) const {
@@ -715,6 +789,11 @@ class Ga {
       }
     }
     Individual& best = pop.front();
+    out.makespan_before_ils = best.res.makespan;
+    if (o_.ils_patience > 0 && n_ >= 3 && o_.three_opt_iterations >= 0) {
+      if (helpers.empty()) helpers.push_back(std::make_unique<Ga>(net_, searched_, suffix_, o_));
+      iterated_local_search(best, out, helpers);
+    }
     out.makespan_before_polish = best.res.makespan;
     if (o_.polish_sweeps > 0 && n_ >= 2) {
       const std::size_t ga_improvements = improvements_;  // the polish counts its own moves
@@ -772,6 +851,8 @@ void check_ga_options(const GaOptions& o) {
   if (o.stall_generations < 0) bad("stall_generations", "expected >= 0");
   if (o.delayed_gate < 0) bad("delayed_gate", "expected >= 0");
   if (o.polish_sweeps < 0) bad("polish_sweeps", "expected >= 0");
+  if (o.ils_patience < 0) bad("ils_patience", "expected >= 0");
+  if (o.ils_kick < 1) bad("ils_kick", "expected >= 1, got " + std::to_string(o.ils_kick));
   if (o.three_opt_depth < 0) bad("three_opt_depth", "expected >= 0");
   if (o.three_opt_patience < 0) bad("three_opt_patience", "expected >= 0");
   if (o.threads < 0 || o.threads > 64) bad("threads", "expected 0..64");

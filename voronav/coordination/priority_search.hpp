@@ -4,11 +4,14 @@
 //  - exhaustive_search(): every order of the urgent group (branch and bound on the makespan).
 //  - genetic_search(): GA with DPX crossover and greedy reconnection by the largest M + D,
 //    mutation removing 4..7 edges, 3-opt local search, elitism and the convergence rule of
-//    sections 4.2 and 5.1, all parameters in GaOptions, seeded.
+//    sections 4.2 and 5.1, all parameters in GaOptions, seeded; beyond the paper (issue #16,
+//    options, off by default): other 3-opt neighbourhoods, an iterated local search and a polish
+//    after the GA, and named settings (ga_preset()).
 // Orders are compared by (makespan, sum of arrivals), so that among orders with the same makespan
 // the one that lets the others arrive earlier wins (the paper only names the makespan).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -119,6 +122,23 @@ struct GaOptions {
   /// (makespan, sum of arrivals) improves; sweeps repeat until one takes no move or this many
   /// sweeps ran). 0 = none (the paper's GA).
   int polish_sweeps = 0;
+  /// After the GA, before the polish (beyond the paper, issue #16): iterated local search from
+  /// the GA's best order. Each step makes crossovers_per_generation kicks of the current best
+  /// (ils_kick random segment moves, the paper's 3-opt draw), runs the child's 3-opt on each
+  /// (kCriticalDelayed: critical-first, and the delayed sweeps only when the kick is then no worse
+  /// than the current best), and the best kick of the step replaces the current best when
+  /// (makespan, sum of arrivals) improves. Every kick draws from its own stream seeded from the
+  /// main one, so the result does not depend on the thread count. Stops after this many steps in
+  /// a row without a better order, after max_rounds steps, or at ils_evaluations. 0 = none (the
+  /// paper's GA). Never returns an order worse than the GA's best. Needs the 3-opt
+  /// (three_opt_iterations >= 0) and at least 3 searched robots; skipped otherwise.
+  int ils_patience = 0;
+  /// Random segment moves per kick of the iterated local search (>= 1).
+  int ils_kick = 2;
+  /// The iterated local search starts no step once the whole search (GA and ILS, all threads)
+  /// has made this many evaluations; 0 = no cap. Evaluations are counted the same way for every
+  /// thread count, so the cap keeps the result independent of it.
+  std::size_t ils_evaluations = 0;
   /// 0: one RNG stream for the whole GA (the results of earlier versions). >= 1: each child of a
   /// generation (crossover, mutation, 3-opt) draws from its own stream, seeded from the main one,
   /// and the children are made on this many threads; the result is the same for every value >= 1.
@@ -130,6 +150,14 @@ struct GaOptions {
   /// without evaluating them). The result equals workers = 1 bit for bit (issue #16).
   int workers = 1;
 };
+
+/// Named GA settings (issue #16): "paper" = GaOptions{} (the paper's GA); "fast" = the setting
+/// that met the issue's check (docs/coordination.md, bench/results/coordination.md tenth pass):
+/// critical-delayed 3-opt, delayed gate 10, stall 2, then the iterated local search (patience 15,
+/// kicks of 2 segment moves, at most 250,000 evaluations for the whole search), on 2 threads
+/// (the result is the same for every thread count >= 1). The seed is left at its default.
+/// Throws voronav::Error for another name.
+[[nodiscard]] GaOptions ga_preset(std::string_view name);
 
 struct SearchOptions {
   SearchKind kind = SearchKind::kGa;
@@ -159,6 +187,11 @@ struct SearchResult {
   std::size_t polish_improvements = 0;
   int polish_sweeps = 0;
   double makespan_before_polish = 0.0;
+  /// GaOptions::ils_patience: steps the iterated local search ran, steps that improved the best
+  /// order, and the makespan of the GA's best order before it.
+  int ils_steps = 0;
+  int ils_improvements = 0;
+  double makespan_before_ils = 0.0;
 };
 
 /// True when (makespan, sum_of_arrivals) of a is better than b (with a 1e-9 tolerance).
