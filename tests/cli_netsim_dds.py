@@ -75,7 +75,8 @@ def case_repair_ring_equals_sim():
     # the Repair sent again with its hop limit in the message and answered from beyond two hops
     # must give the same run over DDS as in-process.
     f = os.path.join(ROOT, "data", "netsim", "s3_run7_unanswered.yaml")
-    args = ("--scenario", f, "--method", "decentralized", "--repair-expand-hops", "32")
+    args = ("--scenario", f, "--method", "decentralized", "--repair-expand-hops", "32",
+            "--repair-sense-walk", "false")
     sim = per_run(*args)
     dds = per_run(*args, "--transport", "dds")
     same_runs(sim, dds, "s3r7 with repair_expand_hops")

@@ -643,8 +643,8 @@ void setup(CLI::App& app) {
   c->add_option("--repair-sense-walk", args->repair_sense_walk,
                 "true|false: the relay nearest the blocked decentralized source walks to sense "
                 "the break when it knows no way round or had not seen the change, and answers "
-                "its Repair from what it sensed (options key repair_sense_walk; overrides a "
-                "scenario file's)");
+                "its Repair from what it sensed (options key repair_sense_walk, default true; "
+                "overrides a scenario file's)");
   c->add_option("--repair-sense-wait-s", args->repair_sense_wait_s,
                 ">= 0: with --repair-sense-walk, how long the source waits for a relay that "
                 "walks to sense the break, and how long that relay keeps at it [s] (options key "

@@ -248,6 +248,9 @@ TEST(DecentralizedRepair, AnUnansweredRepairIsNotResentToTheSameNeighbours) {
 NetSimScenarioFile saved_decentralized_run(const std::string& name) {
   auto f = load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/" + name);
   f.options.method = Method::kDecentralized;
+  // The saved runs test the Repair mechanisms of stops 19-27; repair_sense_walk (on by default
+  // since stop 28) is set by the tests that measure it.
+  f.options.repair_sense_walk = false;
   return f;
 }
 
@@ -328,6 +331,18 @@ TEST(DecentralizedRepair, EveryAnswerTheSourceReceivesIsTakenRefusedOrDropped) {
         << name;
     // An answer taken is a Repair executed; the source's own detours and fixed answers are too.
     EXPECT_GE(m.repairs_executed, m.repair_answers_taken) << name;
+  }
+  // The same accounting with the defaults (repair_sense_walk on: sensed answers come too).
+  for (const char* name : {"turtlebot3_world.yaml", "s2_run10_boxed_in.yaml", "depot.yaml"}) {
+    auto f = load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/" + name);
+    f.options.method = Method::kDecentralized;
+    f.options.repair_sense_walk = NetSimOptions{}.repair_sense_walk;
+    const auto m = run_netsim(f.scenario, f.options).metrics;
+    EXPECT_GE(m.repair_answers_received, 1) << name;
+    EXPECT_EQ(m.repair_answers_received,
+              m.repair_answers_taken + m.repair_answers_refused + m.repair_answers_dropped)
+        << name << " (defaults)";
+    EXPECT_LE(m.repair_answers_sensed_taken, m.repair_answers_taken) << name;
   }
 }
 

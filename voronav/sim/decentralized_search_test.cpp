@@ -131,6 +131,7 @@ TEST(DecentralizedSearch, ABoxedInSourceSensesTheGapsOfItsKnownSpaceAndArrives) 
       load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/s2_run10_boxed_in.yaml");
   const NetSimScenario& sc = f.scenario;
   NetSimOptions o = f.options;
+  o.repair_sense_walk = false;  // as saved (before stop 28): the Search mechanism alone
   o.method = Method::kDecentralized;
   o.sense_when_boxed_in = false;
   const auto off = run_netsim(sc, o).metrics;
@@ -155,6 +156,7 @@ TEST(DecentralizedSearch, ASourceWalkBlockedInItsWindowPlansOnItsWholeMap) {
   const auto f =
       load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/s4_run15_window.yaml");
   NetSimOptions o = f.options;
+  o.repair_sense_walk = false;  // as saved (before stop 28): the Search mechanism alone
   o.method = Method::kDecentralized;
   ASSERT_FALSE(o.walk_replan_whole_map);
   const auto m = run_netsim(f.scenario, o).metrics;

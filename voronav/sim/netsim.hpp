@@ -220,8 +220,9 @@ struct NetSimOptions {
   /// the break and answers with the way it drove (or tells the source it gave up). Its answer
   /// goes to the source directly (marked in PathMessage::exit_index; counted in
   /// repair_answers_sensed / repair_answers_sensed_taken, repair_sense_walks, _walk_m, _answers).
-  /// Off by default (docs/reproductions/networked.md, stop 28).
-  bool repair_sense_walk = false;
+  /// On by default since stop 28 (docs/reproductions/networked.md, stop 28): with it, Repair
+  /// executes in every change run of s1-s4 and every decentralized run arrives.
+  bool repair_sense_walk = true;
   /// With repair_sense_walk: how long the source waits for a relay that said it walks to sense
   /// the break, and how long that relay keeps at it [s].
   double repair_sense_wait_s = 60.0;

@@ -10,6 +10,7 @@
 #include "voronav/core/error.hpp"
 #include "voronav/network/sim_radio.hpp"
 #include "voronav/sim/robot_agent.hpp"
+#include "voronav/sim/scenario_file.hpp"
 #include "voronav/sim/scenarios.hpp"
 #include "voronav/sim/test_halls.hpp"
 
@@ -260,14 +261,16 @@ TEST(NetSim, BadInputIsRejected) {
 // Table 7: runs 1, 5, 9, 13 share a placement and have 0, 1, 2, 3 obstacle changes. Each change
 // is timed on runs with the changes before it (scenarios.cpp, extend_changes); timed on the
 // change-free runs, as before the fourth pass of issue #13, s1r13 got 1 change instead of 3.
+// Scenario 4: since repair_sense_walk is on (stop 28) the decentralized source of s1 arrives before
+// a third change can be placed on its route ahead (s1r13 gets 2); s4r13 gets all three.
 TEST(Scenarios, Table7RunsShareWorldsAndGetTheirChanges) {
-  const auto a = make_paper_run(1, 1), c = make_paper_run(1, 13);
+  const auto a = make_paper_run(4, 1), c = make_paper_run(4, 13);
   EXPECT_EQ(a.world, c.world);
   EXPECT_EQ(a.robots, c.robots) << "run 13 is run 1's placement with three changes";
-  EXPECT_EQ(a.robots.size(), 6u);
+  EXPECT_EQ(a.robots.size(), 12u);
   EXPECT_TRUE(a.changes.empty());
   ASSERT_EQ(c.changes.size(), 3u) << "Table 7: the third obstacle change";
-  const auto b = make_paper_run(1, 9);
+  const auto b = make_paper_run(4, 9);
   ASSERT_EQ(b.changes.size(), 2u) << "Table 7: the second obstacle change";
   for (std::size_t k = 0; k < 2; ++k)
     EXPECT_EQ(b.changes[k].cells, c.changes[k].cells) << "runs 9 and 13 share change " << k + 1;
@@ -286,11 +289,15 @@ TEST(Scenarios, Table7RunsShareWorldsAndGetTheirChanges) {
 // drives after the first one with the default Repair. With the two options, it repairs the first
 // break on the way it had and arrives before the second change happens: 1 of the 3 changes is
 // applied. (The placement itself no longer depends on those options: make_paper_run's probe runs
-// pin them off.)
+// pin them off.) The run is s1r13 as placed before stop 28 (data/netsim/s1_run13_table7.yaml,
+// repair_sense_walk off): make_paper_run's probes now drive with repair_sense_walk on.
 TEST(Scenarios, AFixedAnswerArrivesBeforeTheLaterTable7ChangesOfS1r13) {
-  const auto sc = make_paper_run(1, 13);
+  const auto f =
+      load_netsim_scenario(std::string(VORONAV_SOURCE_DIR) + "/data/netsim/s1_run13_table7.yaml");
+  const NetSimScenario& sc = f.scenario;
   ASSERT_EQ(sc.changes.size(), 3u);
-  NetSimOptions o;
+  NetSimOptions o = f.options;
+  ASSERT_FALSE(o.repair_sense_walk);
   o.method = Method::kDecentralized;
   o.repair_fix_answer = false;  // whatever the defaults
   o.repair_walk_keep_ratio = 0.0;

@@ -179,9 +179,8 @@ struct Probe {
 
 /// The options of the probe runs that place Table 7's changes: the defaults, with the source's
 /// Repair options that are off by default (beyond the paper: repair_share_met_blocks,
-/// repair_fix_answer, repair_fix_seen_only, repair_expand_hops, repair_walk_keep_ratio,
-/// repair_sense_walk) pinned
-/// off, so the same scenario (the same change times and places) comes out whatever their
+/// repair_fix_answer, repair_fix_seen_only, repair_expand_hops, repair_walk_keep_ratio) pinned
+/// off and repair_sense_walk (on by default since stop 28) pinned on, so the same scenario (the same change times and places) comes out whatever their
 /// defaults are, and variants of them are compared on the same changes. Without the pin, a
 /// source that repairs differently drives another way after a change, and the later changes are
 /// placed on that way or not at all (stop 25: with repair_fix_answer and repair_walk_keep_ratio
@@ -195,7 +194,7 @@ NetSimOptions probe_options(Method m) {
   o.repair_fix_seen_only = false;
   o.repair_expand_hops = 0;
   o.repair_walk_keep_ratio = 0.0;
-  o.repair_sense_walk = false;
+  o.repair_sense_walk = true;
   return o;
 }
 
