@@ -34,6 +34,8 @@ class Options:
     repair_expand_hops: int
     repair_fix_seen_only: bool
     repair_walk_keep_ratio: float
+    repair_sense_walk: bool  # a relay walks to sense the break of a Repair (on since stop 28)
+    repair_sense_wait_s: float
     collect_s: float
     repair_timeout_s: float
     seed: int
