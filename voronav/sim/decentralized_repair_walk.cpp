@@ -1,9 +1,9 @@
 // The decentralized method of seed 000, beyond Tables 4-5 (issue #13, stop 28, option
-// repair_sense_walk, off by default): a relay goes and senses the break of the source's Repair on
-// its behalf, as the relays of figure 18 go and sense a gap for the Search. Traced need: in 11 of
-// 48 change runs no Repair executed, because no robot within repair_hops knew a way round the
-// break, or because every answerer had not seen the change and its detour crossed it
-// (docs/reproductions/networked.md, stops 22 and 25). The walking relay answers only from a map
+// repair_sense_walk, on by default since stop 28): a relay goes and senses the break of the
+// source's Repair on its behalf, as the relays of figure 18 go and sense a gap for the Search.
+// Traced need: in 11 of 48 change runs no Repair executed, because no robot within repair_hops knew
+// a way round the break, or because every answerer had not seen the change and its detour crossed
+// it (docs/reproductions/networked.md, stops 22 and 25). The walking relay answers only from a map
 // that holds the break as it is now.
 #include <algorithm>
 #include <vector>
