@@ -20,6 +20,11 @@ py::dict traffic_dict(const network::TrafficCounter& c) {
   return py::dict(py::arg("messages") = c.messages, py::arg("bytes") = c.bytes);
 }
 
+/// The options an exploration used, as the library echoes them (the CLI's `input`).
+py::object options_dict(const ex::ExplorationOptions& o) {
+  return py::module_::import("json").attr("loads")(ex::to_json(o));
+}
+
 py::dict metrics_dict(const sm::NetSimMetrics& m) {
   py::dict by_type;
   for (const auto& [k, v] : m.by_type)
@@ -419,12 +424,8 @@ void bind_sim(py::module_& m) {
                      "tree: the reactive search's ControllerOptions")
       .def_readwrite("frontier_controller", &ex::ExplorationOptions::frontier_controller,
                      "frontier methods: their reactive windows' ControllerOptions")
-      .def(
-          "to_dict",
-          [](const ex::ExplorationOptions& o) {
-            return py::module_::import("json").attr("loads")(ex::to_json(o));
-          },
-          "Every top-level option by name, as the CLI's `input` echoes it (on/off as strings).")
+      .def("to_dict", &options_dict,
+           "Every top-level option by name, as the CLI's `input` echoes it (on/off as strings).")
       .def("__repr__", [](const ex::ExplorationOptions& o) {
         return "explore.Options(method=" + std::string(ex::to_string(o.method)) +
                ", robots=" + std::to_string(o.robots) + ")";
@@ -445,7 +446,7 @@ void bind_sim(py::module_& m) {
           team = std::move(r.recording.team_map);
         }
         py::dict d = py::module_::import("json").attr("loads")(js);
-        d["input"] = py::module_::import("json").attr("loads")(ex::to_json(o));
+        d["input"] = options_dict(o);
         d["team_map"] = std::move(team);
         return d;
       },

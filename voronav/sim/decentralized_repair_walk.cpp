@@ -135,9 +135,7 @@ void RobotAgent::repair_walk_progress(bool arrived) {
 void RobotAgent::answer_sensed(const std::vector<VoronoiPoint>& fixed) {
   const RepairMessage m = *repair_walk_;
   end_repair_walk();
-  bool heard = false;
-  for (const auto& n : transport_.nearby(r_.id))
-    heard = heard || n.id == m.source;
+  const bool heard = neighbour_position(m.source).has_value();
   NS_DEBUG("t=%.1f robot %u answers the Repair from what it sensed (%zu points, source %s)\n", now_,
            r_.id.value, fixed.size(), heard ? "in range" : "out of range");
   if (!heard) return;
@@ -159,10 +157,7 @@ void RobotAgent::answer_sensed(const std::vector<VoronoiPoint>& fixed) {
 void RobotAgent::send_sense_notice(std::uint32_t what) {
   if (!repair_walk_) return;
   const RepairMessage& m = *repair_walk_;
-  bool heard = false;
-  for (const auto& n : transport_.nearby(r_.id))
-    heard = heard || n.id == m.source;
-  if (!heard) return;
+  if (!neighbour_position(m.source)) return;
   PathMessage p;
   p.source = m.source;
   p.num = m.num | kRepairFlag;  // a Repair answer's flag: handled as one (on_repair_path)
